@@ -1,0 +1,48 @@
+// A COLMAP dense workspace (the output of `colmap image_undistorter`) read into
+// the plain structs of src/mvs_input.h, and the paths of the maps written back.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mvs_input.h"
+#include "sparse_model.h"
+#include "stereo_options.h"
+
+namespace msp {
+
+struct Workspace {
+  std::string path;
+  SparseModel model;
+  // One view per model image, in model order (= COLMAP's mvs::Model index).
+  // Images (gray/color) are loaded only for views used by some problem.
+  std::vector<View> views;
+  std::vector<Problem> problems;
+};
+
+// Reads <workspace_path>/sparse, the problems of stereo/patch-match.cfg (or
+// options.config_path), the images used by them from images/<name>, downsized
+// to --PatchMatchStereo.max_image_size with the intrinsics scaled as COLMAP's
+// mvs::Image::Downsize does. Cameras must be SIMPLE_PINHOLE, PINHOLE or a
+// model whose distortion parameters are all zero. Throws InputError with a
+// specific message on every bad input.
+Workspace LoadWorkspace(const StereoCommandOptions& options);
+
+// Converts a sparse camera + image pose to the core camera; throws InputError
+// for a distorted camera ("run colmap image_undistorter").
+core::Camera MakeCoreCamera(const SparseCamera& camera, const SparseImage& image);
+
+// Scale factor and size of COLMAP's Downsize for a maximum side (<= 0: none).
+void DownsizedSize(int width, int height, int max_image_size, int* new_width,
+                   int* new_height);
+
+// <ws>/stereo/{depth,normal}_maps/<name>.<type>.bin, type "photometric" or "geometric".
+std::string DepthMapPath(const std::string& workspace_path, const std::string& image_name,
+                         const std::string& type);
+std::string NormalMapPath(const std::string& workspace_path, const std::string& image_name,
+                          const std::string& type);
+
+// Writes stereo/fusion.cfg (one image name per line, problem order) unless it exists.
+void WriteFusionConfigIfMissing(const Workspace& workspace);
+
+}  // namespace msp

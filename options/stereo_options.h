@@ -1,0 +1,70 @@
+// Option structs of msp_stereo. PatchMatchStereoOptions mirrors COLMAP's
+// PatchMatchOptions field by field (same names, same defaults), so an existing
+// `colmap patch_match_stereo` command line is a valid `msp_stereo` one.
+// MspStereoOptions holds this project's own knobs (--MspStereo.<field>).
+#pragma once
+
+#include <string>
+
+namespace msp {
+
+// Every --PatchMatchStereo.* option of COLMAP 3.8 (src/mvs/patch_match.h).
+struct PatchMatchStereoOptions {
+  // Maximum image side; larger images (and K) are downsized, and so are the maps.
+  int max_image_size = -1;
+  // CUDA devices; -1 = all. Only meaningful with the CUDA back-end.
+  std::string gpu_index = "-1";
+  // Depth range; -1 = from the sparse model's track observations.
+  double depth_min = -1.0;
+  double depth_max = -1.0;
+  // Half window size of the matching window, and the sampling step inside it.
+  int window_radius = 5;
+  int window_step = 1;
+  // Bilateral NCC weights; sigma_spatial <= 0 means window_radius.
+  double sigma_spatial = -1.0;
+  double sigma_color = 0.2;
+  // Monte-Carlo view samples per pixel.
+  int num_samples = 15;
+  double ncc_sigma = 0.6;
+  // Minimum triangulation angle (degrees) for __auto__ source selection.
+  double min_triangulation_angle = 1.0;
+  double incident_angle_sigma = 0.9;
+  int num_iterations = 5;
+  bool geom_consistency = true;
+  double geom_consistency_regularizer = 0.3;
+  double geom_consistency_max_cost = 3.0;
+  bool filter = true;
+  double filter_min_ncc = 0.1;
+  double filter_min_triangulation_angle = 3.0;
+  int filter_min_num_consistent = 2;
+  double filter_geom_consistency_max_cost = 1.0;
+  // Memory budget in gigabytes for cached per-image state.
+  double cache_size = 32.0;
+  bool allow_missing_files = false;
+  bool write_consistency_graph = false;
+};
+
+// This project's own options (--MspStereo.*).
+struct MspStereoOptions {
+  // "cpu" or "cuda" ("cuda" needs a build with CUDA and a GPU).
+  std::string backend = "cpu";
+  // Seed of the counter-based random generator; a run is a pure function of it.
+  int seed = 0;
+  // Worker threads of the CPU back-end; <= 0 = all cores.
+  int num_threads = -1;
+  // Folder of per-image segmentation mask layers; "" = <workspace>/masks.
+  std::string mask_path = "";
+};
+
+// Everything the msp_stereo command needs.
+struct StereoCommandOptions {
+  std::string workspace_path;
+  std::string workspace_format = "COLMAP";
+  std::string pmvs_option_name = "option-all";
+  std::string config_path;
+  std::string project_path;
+  PatchMatchStereoOptions patch_match;
+  MspStereoOptions msp;
+};
+
+}  // namespace msp

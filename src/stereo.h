@@ -1,0 +1,34 @@
+// Entry point of the stereo back-ends: runs every problem through the pass
+// schedule and hands finished maps to a sink. Knows nothing of files.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dense_map.h"
+#include "mvs_input.h"
+#include "stereo_options.h"
+
+namespace msp {
+
+// Where finished maps go (colmap_ext writes them as COLMAP files).
+class MapSink {
+ public:
+  virtual ~MapSink() = default;
+  // True when the final outputs for view `view` already exist, so its problem
+  // is skipped (resume, as COLMAP does).
+  virtual bool HasFinalOutput(int view) const = 0;
+  // `type` is "photometric" or "geometric". depth: 1 channel, 0 = invalid;
+  // normal: 3 channels, unit, camera frame, (0,0,0) where depth is 0.
+  virtual void Write(int view, const std::string& type, const DenseMap& depth,
+                     const DenseMap& normal) = 0;
+};
+
+// Runs the configured back-end. `scratch_dir` is where per-image state may be
+// spilled when it exceeds --PatchMatchStereo.cache_size. Throws
+// std::runtime_error when the requested back-end is not available.
+void RunStereo(const std::vector<View>& views, const std::vector<Problem>& problems,
+               const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
+               const std::string& scratch_dir, MapSink& sink);
+
+}  // namespace msp

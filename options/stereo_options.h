@@ -8,6 +8,13 @@
 
 namespace msp {
 
+// Widest matching window (half size) the back-ends support. COLMAP accepts up
+// to 32 because its CUDA block is 32 threads wide, but its kernels only hold
+// windows up to 20 in their fixed-size arrays; we validate what the code can
+// actually do. Back-ends size their window arrays from this constant (and
+// static_assert against it) so Check() and the kernels cannot drift apart.
+constexpr int kMaxWindowRadius = 20;
+
 // Every --PatchMatchStereo.* option of COLMAP 3.8 (src/mvs/patch_match.h).
 struct PatchMatchStereoOptions {
   // Maximum image side; larger images (and K) are downsized, and so are the maps.

@@ -1,0 +1,55 @@
+// Command line and ini parsing of the `msp_stereo` command. The accepted
+// options are a superset of `colmap patch_match_stereo` (COLMAP 3.8), so an
+// existing patch_match_stereo command line or project.ini works unchanged.
+//
+// Precedence: defaults, then the ini file given with --project_path, then the
+// command line. (COLMAP 3.8 ignores the command line entirely once
+// --project_path is given; letting explicit flags win is what users expect
+// and keeps every COLMAP invocation valid, since COLMAP never passes both.)
+//
+// Ini files use COLMAP's layout: top-level keys (workspace_path, ...) and the
+// sections [PatchMatchStereo] and [MspStereo]. Other sections and unknown
+// top-level keys of a COLMAP project.ini (SiftExtraction, database_path, ...)
+// are ignored; an unknown key inside [PatchMatchStereo] or [MspStereo] is an
+// error, since it is almost certainly a typo.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "stereo_options.h"
+
+namespace msp {
+
+// A bad command line, ini file or option value; the message names the option.
+class OptionError : public std::runtime_error {
+ public:
+  explicit OptionError(const std::string& message) : std::runtime_error(message) {}
+};
+
+enum class ParseStatus {
+  kRun,   // options are filled in; run the command
+  kHelp,  // -h / --help was given; print StereoCommandUsage() and exit 0
+};
+
+// Parses the arguments of `msp_stereo` (argv[0] is the program name) into
+// `options`, which must hold the defaults on entry. Throws OptionError for an
+// unknown option, a malformed value, an unreadable ini file or a missing
+// --workspace_path. Value ranges are not checked here: see option_check.h.
+// --workspace_format is normalised to upper case (COLMAP compares it
+// case-insensitively).
+ParseStatus ParseStereoCommand(int argc, const char* const argv[], StereoCommandOptions* options);
+
+// Usage text listing every option with its default and help text.
+std::string StereoCommandUsage();
+
+// The full names of every option the command accepts, without "--"
+// (e.g. "PatchMatchStereo.window_radius"), in usage order.
+std::vector<std::string> StereoCommandOptionNames();
+
+// "name = value" lines for every option that maps to a field, in usage order;
+// logged at start-up so a run can be reproduced.
+std::string FormatStereoCommandOptions(const StereoCommandOptions& options);
+
+}  // namespace msp

@@ -1,0 +1,141 @@
+#include "option_check.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace msp {
+namespace {
+
+StereoCommandOptions Valid() {
+  StereoCommandOptions options;
+  options.workspace_path = "ws";
+  return options;
+}
+
+// The message of the OptionError thrown by Check, or "" if none.
+std::string CheckError(const StereoCommandOptions& options) {
+  try {
+    CheckStereoCommandOptions(options);
+  } catch (const OptionError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+struct BadCase {
+  std::string option;  // as named in the message, without "--"
+  std::string value;   // as printed in the message
+  std::string range;   // a piece of the allowed range in the message
+  std::function<void(StereoCommandOptions*)> apply;
+};
+
+TEST(OptionCheck, DefaultsAreValid) { EXPECT_EQ(CheckError(Valid()), ""); }
+
+TEST(OptionCheck, EveryOutOfRangeValueNamesOptionValueAndRange) {
+  const std::vector<BadCase> cases = {
+      {"PatchMatchStereo.window_radius", "0", "[1, 20]",
+       [](auto* o) { o->patch_match.window_radius = 0; }},
+      {"PatchMatchStereo.window_radius", "21", "[1, 20]",
+       [](auto* o) { o->patch_match.window_radius = 21; }},
+      {"PatchMatchStereo.window_radius", "32", "kMaxWindowRadius",
+       [](auto* o) { o->patch_match.window_radius = 32; }},
+      {"PatchMatchStereo.window_step", "0", "[1, 2]",
+       [](auto* o) { o->patch_match.window_step = 0; }},
+      {"PatchMatchStereo.window_step", "3", "[1, 2]",
+       [](auto* o) { o->patch_match.window_step = 3; }},
+      {"PatchMatchStereo.depth_min", "-0.5", "-1",
+       [](auto* o) {
+         o->patch_match.depth_min = -0.5;
+         o->patch_match.depth_max = 2;
+       }},
+      {"PatchMatchStereo.depth_min", "-1", "depth_max = 5",
+       [](auto* o) { o->patch_match.depth_max = 5; }},
+      {"PatchMatchStereo.depth_max", "1", ">= depth_min = 2",
+       [](auto* o) {
+         o->patch_match.depth_min = 2;
+         o->patch_match.depth_max = 1;
+       }},
+      {"PatchMatchStereo.depth_max", "-1", ">= depth_min = 2",
+       [](auto* o) { o->patch_match.depth_min = 2; }},
+      {"PatchMatchStereo.sigma_color", "0", "> 0", [](auto* o) { o->patch_match.sigma_color = 0; }},
+      {"PatchMatchStereo.num_samples", "0", "> 0", [](auto* o) { o->patch_match.num_samples = 0; }},
+      {"PatchMatchStereo.ncc_sigma", "-1", "> 0", [](auto* o) { o->patch_match.ncc_sigma = -1; }},
+      {"PatchMatchStereo.min_triangulation_angle", "180", "[0, 180)",
+       [](auto* o) { o->patch_match.min_triangulation_angle = 180; }},
+      {"PatchMatchStereo.min_triangulation_angle", "-1", "[0, 180)",
+       [](auto* o) { o->patch_match.min_triangulation_angle = -1; }},
+      {"PatchMatchStereo.incident_angle_sigma", "0", "> 0",
+       [](auto* o) { o->patch_match.incident_angle_sigma = 0; }},
+      {"PatchMatchStereo.num_iterations", "0", "> 0",
+       [](auto* o) { o->patch_match.num_iterations = 0; }},
+      {"PatchMatchStereo.geom_consistency_regularizer", "-0.1", ">= 0",
+       [](auto* o) { o->patch_match.geom_consistency_regularizer = -0.1; }},
+      {"PatchMatchStereo.geom_consistency_max_cost", "-1", ">= 0",
+       [](auto* o) { o->patch_match.geom_consistency_max_cost = -1; }},
+      {"PatchMatchStereo.filter_min_ncc", "1.5", "[-1, 1]",
+       [](auto* o) { o->patch_match.filter_min_ncc = 1.5; }},
+      {"PatchMatchStereo.filter_min_ncc", "-2", "[-1, 1]",
+       [](auto* o) { o->patch_match.filter_min_ncc = -2; }},
+      {"PatchMatchStereo.filter_min_triangulation_angle", "181", "[0, 180]",
+       [](auto* o) { o->patch_match.filter_min_triangulation_angle = 181; }},
+      {"PatchMatchStereo.filter_min_triangulation_angle", "-1", "[0, 180]",
+       [](auto* o) { o->patch_match.filter_min_triangulation_angle = -1; }},
+      {"PatchMatchStereo.filter_min_num_consistent", "-1", ">= 0",
+       [](auto* o) { o->patch_match.filter_min_num_consistent = -1; }},
+      {"PatchMatchStereo.filter_geom_consistency_max_cost", "-1", ">= 0",
+       [](auto* o) { o->patch_match.filter_geom_consistency_max_cost = -1; }},
+      {"PatchMatchStereo.cache_size", "0", "> 0", [](auto* o) { o->patch_match.cache_size = 0; }},
+      {"MspStereo.backend", "`opencl`", "{cpu, cuda}", [](auto* o) { o->msp.backend = "opencl"; }},
+      {"MspStereo.seed", "-3", ">= 0", [](auto* o) { o->msp.seed = -3; }},
+      {"workspace_format", "`CMP-MVS`", "{COLMAP, PMVS}",
+       [](auto* o) { o->workspace_format = "CMP-MVS"; }},
+  };
+  for (const BadCase& c : cases) {
+    StereoCommandOptions options = Valid();
+    c.apply(&options);
+    const std::string error = CheckError(options);
+    EXPECT_NE(error.find("--" + c.option + ":"), std::string::npos) << c.option << ": " << error;
+    EXPECT_NE(error.find("invalid value " + c.value + " "), std::string::npos) << error;
+    EXPECT_NE(error.find(c.range), std::string::npos) << error;
+  }
+}
+
+TEST(OptionCheck, BoundaryValuesAreValid) {
+  StereoCommandOptions o = Valid();
+  o.patch_match.window_radius = kMaxWindowRadius;
+  o.patch_match.window_step = 2;
+  o.patch_match.depth_min = 0.0;
+  o.patch_match.depth_max = 0.0;
+  o.patch_match.min_triangulation_angle = 0.0;
+  o.patch_match.geom_consistency_regularizer = 0.0;
+  o.patch_match.geom_consistency_max_cost = 0.0;
+  o.patch_match.filter_min_ncc = -1.0;
+  o.patch_match.filter_min_triangulation_angle = 180.0;
+  o.patch_match.filter_min_num_consistent = 0;
+  o.patch_match.filter_geom_consistency_max_cost = 0.0;
+  o.patch_match.sigma_spatial = -5.0;  // <= 0 means window_radius; no rule in COLMAP
+  o.msp.backend = "cuda";
+  o.workspace_format = "PMVS";
+  EXPECT_EQ(CheckError(o), "");
+  o.patch_match.window_radius = 1;
+  o.patch_match.filter_min_ncc = 1.0;
+  EXPECT_EQ(CheckError(o), "");
+}
+
+TEST(OptionCheck, NanIsRejected) {
+  StereoCommandOptions o = Valid();
+  o.patch_match.sigma_color = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(CheckError(o).find("--PatchMatchStereo.sigma_color"), std::string::npos);
+}
+
+TEST(OptionCheck, WorkspacePathRequired) {
+  StereoCommandOptions o;
+  EXPECT_NE(CheckError(o).find("--workspace_path"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace msp

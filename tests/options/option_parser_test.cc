@@ -1,0 +1,314 @@
+#include "option_parser.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace msp {
+namespace {
+
+// Every --PatchMatchStereo.* option of COLMAP 3.8, listed independently of
+// the parser so a dropped or renamed option is caught.
+const std::vector<std::string> kColmapPatchMatchFields = {
+    "max_image_size",
+    "gpu_index",
+    "depth_min",
+    "depth_max",
+    "window_radius",
+    "window_step",
+    "sigma_spatial",
+    "sigma_color",
+    "num_samples",
+    "ncc_sigma",
+    "min_triangulation_angle",
+    "incident_angle_sigma",
+    "num_iterations",
+    "geom_consistency",
+    "geom_consistency_regularizer",
+    "geom_consistency_max_cost",
+    "filter",
+    "filter_min_ncc",
+    "filter_min_triangulation_angle",
+    "filter_min_num_consistent",
+    "filter_geom_consistency_max_cost",
+    "cache_size",
+    "allow_missing_files",
+    "write_consistency_graph",
+};
+const std::vector<std::string> kMspFields = {"backend", "seed", "num_threads", "mask_path"};
+const std::vector<std::string> kTopLevel = {
+    "workspace_path", "workspace_format", "pmvs_option_name", "config_path",
+    "project_path",   "random_seed",      "log_to_stderr",    "log_level"};
+
+// Parses `args` (without the program name) into fresh defaults.
+StereoCommandOptions Parse(std::vector<std::string> args, ParseStatus* status = nullptr) {
+  args.insert(args.begin(), "msp_stereo");
+  std::vector<const char*> argv;
+  for (const std::string& arg : args) argv.push_back(arg.c_str());
+  StereoCommandOptions options;
+  const ParseStatus result =
+      ParseStereoCommand(static_cast<int>(argv.size()), argv.data(), &options);
+  if (status != nullptr) *status = result;
+  return options;
+}
+
+std::string ParseError(const std::vector<std::string>& args) {
+  try {
+    Parse(args);
+  } catch (const OptionError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A temporary ini file removed at the end of the test.
+class IniFile {
+ public:
+  explicit IniFile(const std::string& text)
+      : path_(::testing::TempDir() + "msp_option_parser_test_" + std::to_string(::getpid()) + "_" +
+              ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".ini") {
+    std::ofstream(path_) << text;
+  }
+  ~IniFile() { std::remove(path_.c_str()); }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+TEST(OptionParser, DefaultsEqualColmap) {
+  const PatchMatchStereoOptions p = Parse({"--workspace_path", "ws"}).patch_match;
+  // COLMAP 3.8 src/mvs/patch_match.h initialisers.
+  EXPECT_EQ(p.max_image_size, -1);
+  EXPECT_EQ(p.gpu_index, "-1");
+  EXPECT_EQ(p.depth_min, -1.0);
+  EXPECT_EQ(p.depth_max, -1.0);
+  EXPECT_EQ(p.window_radius, 5);
+  EXPECT_EQ(p.window_step, 1);
+  EXPECT_EQ(p.sigma_spatial, -1.0);
+  EXPECT_DOUBLE_EQ(p.sigma_color, 0.2);
+  EXPECT_EQ(p.num_samples, 15);
+  EXPECT_DOUBLE_EQ(p.ncc_sigma, 0.6);
+  EXPECT_DOUBLE_EQ(p.min_triangulation_angle, 1.0);
+  EXPECT_DOUBLE_EQ(p.incident_angle_sigma, 0.9);
+  EXPECT_EQ(p.num_iterations, 5);
+  EXPECT_TRUE(p.geom_consistency);
+  EXPECT_DOUBLE_EQ(p.geom_consistency_regularizer, 0.3);
+  EXPECT_DOUBLE_EQ(p.geom_consistency_max_cost, 3.0);
+  EXPECT_TRUE(p.filter);
+  EXPECT_DOUBLE_EQ(p.filter_min_ncc, 0.1);
+  EXPECT_DOUBLE_EQ(p.filter_min_triangulation_angle, 3.0);
+  EXPECT_EQ(p.filter_min_num_consistent, 2);
+  EXPECT_DOUBLE_EQ(p.filter_geom_consistency_max_cost, 1.0);
+  EXPECT_DOUBLE_EQ(p.cache_size, 32.0);
+  EXPECT_FALSE(p.allow_missing_files);
+  EXPECT_FALSE(p.write_consistency_graph);
+
+  const StereoCommandOptions o = Parse({"--workspace_path", "ws"});
+  EXPECT_EQ(o.workspace_path, "ws");
+  EXPECT_EQ(o.workspace_format, "COLMAP");
+  EXPECT_EQ(o.pmvs_option_name, "option-all");
+  EXPECT_EQ(o.config_path, "");
+  EXPECT_EQ(o.msp.backend, "cpu");
+  EXPECT_EQ(o.msp.seed, 0);
+}
+
+TEST(OptionParser, ParsesColmapCommandLine) {
+  // The first line of COLMAP's run-colmap-geometric.sh.
+  const StereoCommandOptions o = Parse({"--workspace_path", ".", "--workspace_format", "COLMAP",
+                                        "--PatchMatchStereo.max_image_size", "2000",
+                                        "--PatchMatchStereo.geom_consistency", "true"});
+  EXPECT_EQ(o.workspace_path, ".");
+  EXPECT_EQ(o.patch_match.max_image_size, 2000);
+  EXPECT_TRUE(o.patch_match.geom_consistency);
+  EXPECT_FALSE(Parse({"--workspace_path", ".", "--PatchMatchStereo.geom_consistency", "false"})
+                   .patch_match.geom_consistency);
+}
+
+TEST(OptionParser, ParsesEveryKindOfValue) {
+  const StereoCommandOptions o = Parse({"--workspace_path=/data/ws",
+                                        "--workspace_format",
+                                        "pmvs",
+                                        "--pmvs_option_name",
+                                        "opt",
+                                        "--config_path",
+                                        "my.cfg",
+                                        "--PatchMatchStereo.depth_min",
+                                        "-1",
+                                        "--PatchMatchStereo.depth_max",
+                                        "-1",
+                                        "--PatchMatchStereo.gpu_index",
+                                        "0,1",
+                                        "--PatchMatchStereo.window_radius",
+                                        "7",
+                                        "--PatchMatchStereo.sigma_color=0.5",
+                                        "--PatchMatchStereo.filter",
+                                        "0",
+                                        "--PatchMatchStereo.allow_missing_files",
+                                        "1",
+                                        "--MspStereo.backend",
+                                        "cuda",
+                                        "--MspStereo.seed",
+                                        "42",
+                                        "--MspStereo.num_threads",
+                                        "-1",
+                                        "--MspStereo.mask_path",
+                                        "m",
+                                        "--log_to_stderr",
+                                        "1",
+                                        "--log_level",
+                                        "0",
+                                        "--PatchMatchStereo.num_threads",
+                                        "4"});
+  EXPECT_EQ(o.workspace_path, "/data/ws");
+  EXPECT_EQ(o.workspace_format, "PMVS");  // normalised, COLMAP is case-insensitive here
+  EXPECT_EQ(o.pmvs_option_name, "opt");
+  EXPECT_EQ(o.config_path, "my.cfg");
+  EXPECT_EQ(o.patch_match.depth_min, -1.0);  // a negative value as a separate token
+  EXPECT_EQ(o.patch_match.gpu_index, "0,1");
+  EXPECT_EQ(o.patch_match.window_radius, 7);
+  EXPECT_DOUBLE_EQ(o.patch_match.sigma_color, 0.5);
+  EXPECT_FALSE(o.patch_match.filter);
+  EXPECT_TRUE(o.patch_match.allow_missing_files);
+  EXPECT_EQ(o.msp.backend, "cuda");
+  EXPECT_EQ(o.msp.seed, 42);
+  EXPECT_EQ(o.msp.mask_path, "m");
+}
+
+TEST(OptionParser, RandomSeedFeedsMspSeedUnlessGiven) {
+  EXPECT_EQ(Parse({"--workspace_path", "w", "--random_seed", "7"}).msp.seed, 7);
+  EXPECT_EQ(
+      Parse({"--workspace_path", "w", "--random_seed", "7", "--MspStereo.seed", "3"}).msp.seed, 3);
+}
+
+TEST(OptionParser, ReadsIniWithBothSections) {
+  const IniFile ini(
+      "workspace_path=/from/ini\n"
+      "database_path=/ignored/db\n"
+      "[SiftExtraction]\n"
+      "use_gpu=false\n"
+      "[PatchMatchStereo]\n"
+      "window_radius=9\n"
+      "geom_consistency=false\n"
+      "filter = 0\n"
+      "depth_min=0.5\n"
+      "depth_max=10\n"
+      "[MspStereo]\n"
+      "backend=cuda\n"
+      "seed=11\n");
+  const StereoCommandOptions o = Parse({"--project_path", ini.path()});
+  EXPECT_EQ(o.workspace_path, "/from/ini");
+  EXPECT_EQ(o.patch_match.window_radius, 9);
+  EXPECT_FALSE(o.patch_match.geom_consistency);
+  EXPECT_FALSE(o.patch_match.filter);
+  EXPECT_DOUBLE_EQ(o.patch_match.depth_min, 0.5);
+  EXPECT_DOUBLE_EQ(o.patch_match.depth_max, 10.0);
+  EXPECT_EQ(o.msp.backend, "cuda");
+  EXPECT_EQ(o.msp.seed, 11);
+  EXPECT_EQ(o.patch_match.num_samples, 15);  // untouched default
+}
+
+TEST(OptionParser, CommandLineOverridesIni) {
+  const IniFile ini(
+      "workspace_path=/from/ini\n"
+      "[PatchMatchStereo]\nwindow_radius=9\nnum_samples=4\ngeom_consistency=true\n"
+      "[MspStereo]\nseed=11\n");
+  const StereoCommandOptions o =
+      Parse({"--PatchMatchStereo.window_radius", "3", "--project_path", ini.path(),
+             "--workspace_path", "/from/cli", "--PatchMatchStereo.geom_consistency", "0"});
+  EXPECT_EQ(o.workspace_path, "/from/cli");
+  EXPECT_EQ(o.patch_match.window_radius, 3);
+  EXPECT_FALSE(o.patch_match.geom_consistency);
+  EXPECT_EQ(o.patch_match.num_samples, 4);  // from the ini, not given on the command line
+  EXPECT_EQ(o.msp.seed, 11);
+}
+
+TEST(OptionParser, IniErrorsNameTheProblem) {
+  const IniFile typo("workspace_path=w\n[PatchMatchStereo]\nwindow_radiuss=3\n");
+  EXPECT_NE(ParseError({"--project_path", typo.path()}).find("PatchMatchStereo.window_radiuss"),
+            std::string::npos);
+  const IniFile bad_bool("workspace_path=w\n[PatchMatchStereo]\nfilter=maybe\n");
+  EXPECT_NE(ParseError({"--project_path", bad_bool.path()}).find("maybe"), std::string::npos);
+  EXPECT_NE(
+      ParseError({"--project_path", "/nonexistent/project.ini"}).find("/nonexistent/project.ini"),
+      std::string::npos);
+}
+
+TEST(OptionParser, UnknownOptionIsNamed) {
+  const std::string error =
+      ParseError({"--workspace_path", "w", "--PatchMatchStereo.window_size", "3"});
+  EXPECT_NE(error.find("unknown option"), std::string::npos) << error;
+  EXPECT_NE(error.find("--PatchMatchStereo.window_size"), std::string::npos) << error;
+  // No prefix guessing: an abbreviation is unknown, not silently expanded.
+  EXPECT_NE(ParseError({"--workspace", "w"}).find("--workspace"), std::string::npos);
+  EXPECT_NE(ParseError({"--workspace_path", "w", "stray"}), "");
+}
+
+TEST(OptionParser, BadValuesAreErrors) {
+  EXPECT_NE(ParseError({"--workspace_path", "w", "--PatchMatchStereo.window_radius", "five"})
+                .find("window_radius"),
+            std::string::npos);
+  EXPECT_NE(ParseError({"--workspace_path", "w", "--PatchMatchStereo.filter", "yes please"}), "");
+  EXPECT_NE(ParseError({"--workspace_path", "w", "--PatchMatchStereo.window_radius"}), "");
+}
+
+TEST(OptionParser, WorkspacePathIsRequired) {
+  EXPECT_NE(ParseError({}).find("--workspace_path"), std::string::npos);
+  EXPECT_NE(ParseError({"--PatchMatchStereo.window_radius", "3"}).find("--workspace_path"),
+            std::string::npos);
+}
+
+TEST(OptionParser, HelpWinsAndListsEveryOption) {
+  ParseStatus status = ParseStatus::kRun;
+  Parse({"--help"}, &status);
+  EXPECT_EQ(status, ParseStatus::kHelp);
+  Parse({"--no_such_option", "-h"}, &status);
+  EXPECT_EQ(status, ParseStatus::kHelp);
+
+  const std::string usage = StereoCommandUsage();
+  std::vector<std::string> expected = kTopLevel;
+  for (const std::string& f : kColmapPatchMatchFields) expected.push_back("PatchMatchStereo." + f);
+  for (const std::string& f : kMspFields) expected.push_back("MspStereo." + f);
+  for (const std::string& name : expected) {
+    EXPECT_NE(usage.find("--" + name + " "), std::string::npos) << name;
+  }
+  // Defaults and help text are shown.
+  EXPECT_NE(usage.find("--PatchMatchStereo.window_radius arg (=5)"), std::string::npos) << usage;
+  EXPECT_NE(usage.find("--PatchMatchStereo.sigma_color arg (=0.2)"), std::string::npos) << usage;
+  EXPECT_NE(usage.find("--PatchMatchStereo.geom_consistency arg (=true)"), std::string::npos);
+  EXPECT_NE(usage.find("Half window size"), std::string::npos);
+  EXPECT_NE(usage.find("--MspStereo.backend arg (=cpu)"), std::string::npos);
+}
+
+TEST(OptionParser, EveryListedOptionParses) {
+  const std::vector<std::string> names = StereoCommandOptionNames();
+  for (const std::string& f : kColmapPatchMatchFields) {
+    EXPECT_NE(std::find(names.begin(), names.end(), "PatchMatchStereo." + f), names.end()) << f;
+  }
+  for (const std::string& f : kMspFields) {
+    EXPECT_NE(std::find(names.begin(), names.end(), "MspStereo." + f), names.end()) << f;
+  }
+  // Each option accepts a value of its type on the command line.
+  for (const std::string& name : names) {
+    if (name == "workspace_path" || name == "project_path") continue;
+    const std::string value = name.find("backend") != std::string::npos ? "cpu" : "1";
+    EXPECT_EQ(ParseError({"--workspace_path", "w", "--" + name, value}), "") << name;
+  }
+}
+
+TEST(OptionParser, FormatListsFieldValues) {
+  StereoCommandOptions o =
+      Parse({"--workspace_path", "w", "--PatchMatchStereo.window_radius", "8"});
+  const std::string text = FormatStereoCommandOptions(o);
+  EXPECT_NE(text.find("PatchMatchStereo.window_radius = 8\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("workspace_path = w\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("log_level"), std::string::npos) << text;  // not a field
+}
+
+}  // namespace
+}  // namespace msp

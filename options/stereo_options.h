@@ -6,14 +6,15 @@
 
 #include <string>
 
+#include "core/limits.h"
+
 namespace msp {
 
-// Widest matching window (half size) the back-ends support. COLMAP accepts up
-// to 32 because its CUDA block is 32 threads wide, but its kernels only hold
-// windows up to 20 in their fixed-size arrays; we validate what the code can
-// actually do. Back-ends size their window arrays from this constant (and
-// static_assert against it) so Check() and the kernels cannot drift apart.
-constexpr int kMaxWindowRadius = 20;
+// Widest matching window (half size) the back-ends support, defined once in
+// src/core/limits.h next to the other capacities. COLMAP accepts up to 32
+// (its CUDA block width) although its kernels handle only 20; Check() uses
+// this constant so an accepted value always fits the kernels' window arrays.
+using core::kMaxWindowRadius;
 
 // Every --PatchMatchStereo.* option of COLMAP 3.8 (src/mvs/patch_match.h).
 struct PatchMatchStereoOptions {

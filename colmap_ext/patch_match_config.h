@@ -31,9 +31,18 @@ std::vector<PatchMatchConfigEntry> ParsePatchMatchConfigText(const std::string& 
 std::vector<int> SelectAutoSources(const SparseModel& model, int ref_index, int num,
                                    double min_triangulation_angle_deg);
 
+// SelectAutoSources for every image i with num_per_image[i] > 0 in one pass
+// over the points (COLMAP computes all pairs at once too); the result has one
+// (possibly empty) list per model image.
+std::vector<std::vector<int>> SelectAutoSourcesBatch(const SparseModel& model,
+                                                     const std::vector<int>& num_per_image,
+                                                     double min_triangulation_angle_deg);
+
 // Depth range of an image from the z of the points in its track observations:
 // values at size*0.01 and size*0.99 of the sorted positive depths, times 0.75
 // and 1.25. {-1, -1} when the image observes no point in front of it.
 std::pair<double, double> ComputeDepthRange(const SparseModel& model, int image_index);
+// ComputeDepthRange of every model image, in one pass over the points.
+std::vector<std::pair<double, double>> ComputeDepthRanges(const SparseModel& model);
 
 }  // namespace msp

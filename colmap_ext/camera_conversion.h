@@ -1,0 +1,34 @@
+// Helpers behind MakeCoreCamera (workspace.h): which sparse cameras dense
+// stereo can use, and rescaling a camera to the working resolution.
+#pragma once
+
+#include <string>
+
+#include "core/camera.h"
+#include "sparse_model.h"
+
+namespace msp {
+
+struct PinholeIntrinsics {
+  double fx, fy, cx, cy;
+};
+
+struct PinholeCheck {
+  bool ok;
+  std::string message;  // why not, naming the camera and image, when !ok
+};
+
+// Accepts SIMPLE_PINHOLE, PINHOLE and any COLMAP 3.8 model whose distortion
+// parameters are all zero, with a positive focal length and a sane size.
+PinholeCheck CheckPinholeCamera(const SparseCamera& camera, const SparseImage& image,
+                                PinholeIntrinsics* intrinsics);
+
+// The pose of `image` (R, t, center) with zero size and intrinsics: used for
+// views that no problem reads, whose camera may not be usable.
+core::Camera MakePoseOnlyCamera(const SparseImage& image);
+
+// Scales fx, cx by new_width / width and fy, cy by new_height / height, then
+// sets the new size.
+void ResizeCamera(int new_width, int new_height, core::Camera* cam);
+
+}  // namespace msp

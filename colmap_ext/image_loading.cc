@@ -1,0 +1,62 @@
+#include "image_loading.h"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <string>
+#include <vector>
+
+#include "errors.h"
+
+namespace msp {
+namespace {
+
+constexpr double kInv255 = 1.0 / 255.0;
+
+void CopyPlane(const cv::Mat& plane, float* out) {
+  for (int row = 0; row < plane.rows; ++row) {
+    const float* src = plane.ptr<float>(row);
+    std::copy(src, src + plane.cols, out + static_cast<size_t>(row) * plane.cols);
+  }
+}
+
+}  // namespace
+
+void LoadViewImage(const std::string& path, int width, int height, int new_width, int new_height,
+                   DenseMap* gray, DenseMap* color) {
+  cv::Mat bgr;
+  try {
+    bgr = cv::imread(path, cv::IMREAD_COLOR);
+  } catch (const cv::Exception& e) {
+    throw InputError(path + ": cannot read image: " + e.what());
+  }
+  if (bgr.empty()) {
+    throw InputError(path + ": cannot read image (corrupt file or unsupported format)");
+  }
+  if (bgr.cols != width || bgr.rows != height) {
+    throw InputError(path + ": image is " + std::to_string(bgr.cols) + "x" +
+                     std::to_string(bgr.rows) + " but its camera in the sparse model is " +
+                     std::to_string(width) + "x" + std::to_string(height) +
+                     " (use the images written by `colmap image_undistorter`)");
+  }
+  // Convert to float before resizing so neither step rounds to 8 bits.
+  cv::Mat bgr_float;
+  bgr.convertTo(bgr_float, CV_32FC3, kInv255);
+  if (new_width != width || new_height != height) {
+    cv::Mat resized;
+    cv::resize(bgr_float, resized, cv::Size(new_width, new_height), 0.0, 0.0, cv::INTER_AREA);
+    bgr_float = resized;
+  }
+
+  cv::Mat gray_float;
+  cv::cvtColor(bgr_float, gray_float, cv::COLOR_BGR2GRAY);
+  *gray = DenseMap(new_width, new_height, 1);
+  CopyPlane(gray_float, gray->Plane(0));
+
+  std::vector<cv::Mat> bgr_planes;
+  cv::split(bgr_float, bgr_planes);
+  *color = DenseMap(new_width, new_height, 3);
+  for (int c = 0; c < 3; ++c) CopyPlane(bgr_planes[2 - c], color->Plane(c));  // BGR -> RGB
+}
+
+}  // namespace msp

@@ -1,0 +1,179 @@
+// Source-image ranking for `__auto__` and per-image depth ranges, computed as
+// COLMAP's mvs::Model does (ComputeSharedPoints, ComputeTriangulationAngles,
+// ComputeDepthRanges) from the sparse points' track observations.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "patch_match_config.h"
+
+namespace msp {
+namespace {
+
+// COLMAP ranks by the 75th percentile of the per-point angles between an
+// image pair, so a few wide-baseline points cannot carry a narrow pair.
+constexpr double kTriangulationAnglePercentile = 75.0;
+// ComputeDepthRanges: robust percentiles of the observed depths, then widened
+// by 25% on both sides.
+constexpr float kMinDepthPercentile = 0.01f;
+constexpr float kMaxDepthPercentile = 0.99f;
+constexpr float kDepthStretch = 0.25f;
+
+Eigen::Matrix3d Rotation(const SparseImage& image) {
+  const Eigen::Quaterniond q(image.qvec[0], image.qvec[1], image.qvec[2], image.qvec[3]);
+  return q.normalized().toRotationMatrix();
+}
+
+Eigen::Vector3d Center(const SparseImage& image) {
+  const Eigen::Vector3d t(image.tvec[0], image.tvec[1], image.tvec[2]);
+  return -Rotation(image).transpose() * t;
+}
+
+// Angle between the rays from the two centres to the point, folded into
+// [0, pi/2] (COLMAP's CalculateTriangulationAngle): very acute and very
+// obtuse intersections are equally unstable.
+double TriangulationAngle(const Eigen::Vector3d& center1, const Eigen::Vector3d& center2,
+                          const Eigen::Vector3d& point) {
+  const double baseline2 = (center1 - center2).squaredNorm();
+  const double ray1 = (point - center1).squaredNorm();
+  const double ray2 = (point - center2).squaredNorm();
+  const double denominator = 2.0 * std::sqrt(ray1 * ray2);
+  if (denominator == 0.0) return 0.0;
+  const double cosine = std::clamp((ray1 + ray2 - baseline2) / denominator, -1.0, 1.0);
+  const double angle = std::abs(std::acos(cosine));
+  return std::min(angle, M_PI - angle);
+}
+
+// COLMAP's Percentile: the element at round(p/100 * (n-1)) in sorted order.
+double Percentile(std::vector<double> values, double percentile) {
+  const long long last = static_cast<long long>(values.size()) - 1;
+  const long long idx = std::clamp<long long>(
+      static_cast<long long>(std::round(percentile / 100.0 * static_cast<double>(last))), 0, last);
+  std::nth_element(values.begin(), values.begin() + idx, values.end());
+  return values[idx];
+}
+
+std::unordered_map<uint32_t, int> ImageIndexById(const SparseModel& model) {
+  std::unordered_map<uint32_t, int> index;
+  for (size_t i = 0; i < model.images.size(); ++i) {
+    index.emplace(model.images[i].image_id, static_cast<int>(i));
+  }
+  return index;
+}
+
+}  // namespace
+
+std::vector<std::vector<int>> SelectAutoSourcesBatch(const SparseModel& model,
+                                                     const std::vector<int>& num_per_image,
+                                                     double min_triangulation_angle_deg) {
+  const size_t num_images = model.images.size();
+  std::vector<std::vector<int>> sources(num_images);
+  std::vector<bool> wanted(num_images, false);
+  for (size_t i = 0; i < num_images && i < num_per_image.size(); ++i) {
+    wanted[i] = num_per_image[i] > 0;
+  }
+  const std::unordered_map<uint32_t, int> index_of = ImageIndexById(model);
+  std::vector<Eigen::Vector3d> centers(num_images);
+  for (size_t i = 0; i < num_images; ++i) centers[i] = Center(model.images[i]);
+
+  // Per wanted image, per other image: the angle of every co-observation. As
+  // in COLMAP every pair of track elements of distinct images counts, so the
+  // shared point count is the size of the list.
+  std::vector<std::map<int, std::vector<double>>> angles(num_images);
+  std::vector<int> track;
+  for (const SparsePoint3D& point : model.points3D) {
+    track.clear();
+    bool any_wanted = false;
+    for (const TrackElement& element : point.track) {
+      const auto it = index_of.find(element.image_id);
+      if (it == index_of.end()) continue;
+      track.push_back(it->second);
+      any_wanted = any_wanted || wanted[it->second];
+    }
+    if (!any_wanted) continue;
+    const Eigen::Vector3d X(point.xyz[0], point.xyz[1], point.xyz[2]);
+    for (size_t i = 0; i < track.size(); ++i) {
+      for (size_t j = 0; j < i; ++j) {
+        const int a = track[i];
+        const int b = track[j];
+        if (a == b || (!wanted[a] && !wanted[b])) continue;
+        const double angle = TriangulationAngle(centers[a], centers[b], X);
+        if (wanted[a]) angles[a][b].push_back(angle);
+        if (wanted[b]) angles[b][a].push_back(angle);
+      }
+    }
+  }
+
+  const double min_angle_rad = min_triangulation_angle_deg * M_PI / 180.0;
+  for (size_t ref = 0; ref < num_images; ++ref) {
+    if (!wanted[ref]) continue;
+    std::vector<std::pair<int, int>> candidates;  // (model index, shared count)
+    for (const auto& [other, other_angles] : angles[ref]) {
+      if (Percentile(other_angles, kTriangulationAnglePercentile) >= min_angle_rad) {
+        candidates.emplace_back(other, static_cast<int>(other_angles.size()));
+      }
+    }
+    // More shared points first; ties go to the lower model index (the map
+    // order) so that the selection does not depend on the sort algorithm.
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const auto& a, const auto& b) { return a.second > b.second; });
+    const size_t count = std::min(candidates.size(), static_cast<size_t>(num_per_image[ref]));
+    for (size_t i = 0; i < count; ++i) sources[ref].push_back(candidates[i].first);
+  }
+  return sources;
+}
+
+std::vector<int> SelectAutoSources(const SparseModel& model, int ref_index, int num,
+                                   double min_triangulation_angle_deg) {
+  if (num <= 0 || ref_index < 0 || ref_index >= static_cast<int>(model.images.size())) {
+    return {};
+  }
+  std::vector<int> num_per_image(model.images.size(), 0);
+  num_per_image[ref_index] = num;
+  return SelectAutoSourcesBatch(model, num_per_image, min_triangulation_angle_deg)[ref_index];
+}
+
+std::vector<std::pair<double, double>> ComputeDepthRanges(const SparseModel& model) {
+  const size_t num_images = model.images.size();
+  const std::unordered_map<uint32_t, int> index_of = ImageIndexById(model);
+  std::vector<Eigen::Vector3d> view_dirs(num_images);  // third row of R
+  for (size_t i = 0; i < num_images; ++i) view_dirs[i] = Rotation(model.images[i]).row(2);
+
+  std::vector<std::vector<float>> depths(num_images);
+  for (const SparsePoint3D& point : model.points3D) {
+    const Eigen::Vector3d X(point.xyz[0], point.xyz[1], point.xyz[2]);
+    for (const TrackElement& element : point.track) {
+      const auto it = index_of.find(element.image_id);
+      if (it == index_of.end()) continue;
+      const int i = it->second;
+      const float depth = static_cast<float>(view_dirs[i].dot(X) + model.images[i].tvec[2]);
+      if (depth > 0.0f) depths[i].push_back(depth);
+    }
+  }
+
+  std::vector<std::pair<double, double>> ranges(num_images, {-1.0, -1.0});
+  for (size_t i = 0; i < num_images; ++i) {
+    std::vector<float>& d = depths[i];
+    if (d.empty()) continue;
+    std::sort(d.begin(), d.end());
+    // Float arithmetic as in COLMAP so the chosen indices agree exactly.
+    const size_t min_idx = static_cast<size_t>(d.size() * kMinDepthPercentile);
+    const size_t max_idx = static_cast<size_t>(d.size() * kMaxDepthPercentile);
+    ranges[i] = {d[min_idx] * (1.0f - kDepthStretch), d[max_idx] * (1.0f + kDepthStretch)};
+  }
+  return ranges;
+}
+
+std::pair<double, double> ComputeDepthRange(const SparseModel& model, int image_index) {
+  if (image_index < 0 || image_index >= static_cast<int>(model.images.size())) {
+    return {-1.0, -1.0};
+  }
+  return ComputeDepthRanges(model)[image_index];
+}
+
+}  // namespace msp

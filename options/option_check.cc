@@ -6,6 +6,9 @@
 namespace msp {
 namespace {
 
+// Below this the coarsest round has too few pixels for an 11x11 window.
+constexpr int kMinCoarsestImageSize = 64;
+
 template <typename T>
 std::string ToText(const T& value) {
   std::ostringstream stream;
@@ -82,6 +85,9 @@ void CheckMspStereoOptions(const MspStereoOptions& o) {
     Fail("MspStereo.backend", "`" + o.backend + "`", "one of {cpu, cuda}");
   }
   CheckNonNegative("MspStereo.seed", o.seed);
+  CheckRange("MspStereo.coarsest_image_size", o.coarsest_image_size, kMinCoarsestImageSize,
+             1 << 20, false, false, " (smaller images have too few pixels to match)");
+  CheckRange("MspStereo.window_step", o.window_step, 1, 2);
 }
 
 void CheckStereoCommandOptions(const StereoCommandOptions& o) {

@@ -164,6 +164,15 @@ void DefineOptions(StereoCommandOptions* o, CompatibilityOptions* c, OptionTable
          "Worker threads of the cpu back-end; <= 0 = all cores.");
   t->Add(ms + "mask_path", &m.mask_path,
          "Folder of per-image segmentation mask layers; \"\" = <workspace>/masks.");
+  t->Add(ms + "coarsest_image_size", &m.coarsest_image_size,
+         "Coarse-to-fine rounds halve the images until the larger side is at most this many "
+         "pixels; one round when the images are already that small.");
+  t->Add(ms + "window_step", &m.window_step,
+         "{1, 2}. Sampling step inside the matching window (2 = the paper's every other row and "
+         "column); replaces --PatchMatchStereo.window_step.");
+  t->Add(ms + "bilateral_ncc", &m.bilateral_ncc,
+         "Weight the NCC window bilaterally (COLMAP's sigma_spatial / sigma_color) instead of "
+         "uniformly (APD-MVS).");
 }
 
 bool IsHelpFlag(const std::string& arg) { return arg == "-h" || arg == "--help"; }

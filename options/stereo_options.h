@@ -62,6 +62,16 @@ struct MspStereoOptions {
   int num_threads = -1;
   // Folder of per-image segmentation mask layers; "" = <workspace>/masks.
   std::string mask_path = "";
+  // Rounds of the coarse-to-fine schedule halve the images until the larger
+  // side is at most this many pixels (APD-MVS: 1000).
+  int coarsest_image_size = 1000;
+  // Sampling step inside the matching window. The paper matches every other
+  // row and column of an 11x11 window; --PatchMatchStereo.window_step (COLMAP's
+  // default 1) is not used, so that COLMAP command lines keep this speed.
+  int window_step = 2;
+  // COLMAP's bilateral NCC weights (sigma_spatial, sigma_color) instead of the
+  // uniform weights of APD-MVS.
+  bool bilateral_ncc = false;
 };
 
 // Everything the msp_stereo command needs.

@@ -1,0 +1,40 @@
+// The MapSink of the msp_stereo command: finished maps become COLMAP files
+// under <workspace>/stereo/{depth,normal}_maps/<name>.<type>.bin.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "stereo.h"
+
+namespace msp {
+
+class MapWriter : public MapSink {
+ public:
+  // `view_names[i]` is the image name of view i. The final output type is
+  // "geometric" when `geom_consistency` is set, else "photometric", as in
+  // COLMAP's PatchMatchController.
+  MapWriter(std::string workspace_path, std::vector<std::string> view_names, bool geom_consistency);
+
+  // True when both final files (depth and normal) exist. Consistency graphs
+  // are not required: nothing in COLMAP reads them.
+  bool HasFinalOutput(int view) const override;
+
+  // Writes the depth map, then the normal map, each atomically. Throws
+  // std::invalid_argument for a bad view index, type or map shape (a back-end
+  // bug) and InputError when a file cannot be written. Holds no mutable
+  // state, so back-ends may call it from several threads for different views.
+  void Write(int view, const std::string& type, const DenseMap& depth,
+             const DenseMap& normal) override;
+
+  const std::string& final_type() const { return final_type_; }
+
+ private:
+  const std::string& Name(int view) const;
+
+  std::string workspace_path_;
+  std::vector<std::string> view_names_;
+  std::string final_type_;
+};
+
+}  // namespace msp

@@ -1,0 +1,89 @@
+#include "map_writer.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "dense_map_io.h"
+#include "workspace.h"
+
+namespace msp {
+namespace {
+
+namespace fs = std::filesystem;
+
+class MapWriterTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    workspace_ = fs::path(::testing::TempDir()) /
+                 ("msp_map_writer_test_" + std::to_string(::getpid()) + "_" +
+                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(workspace_);
+  }
+  void TearDown() override { fs::remove_all(workspace_); }
+
+  static DenseMap Depth(float value) { return DenseMap(4, 3, 1, value); }
+  static DenseMap Normal() {
+    DenseMap normal(4, 3, 3);
+    for (int row = 0; row < 3; ++row) {
+      for (int col = 0; col < 4; ++col) normal.At(row, col, 2) = -1.0f;
+    }
+    return normal;
+  }
+
+  fs::path workspace_;
+};
+
+TEST_F(MapWriterTest, WritesColmapPathsIncludingSubfolders) {
+  MapWriter writer(workspace_.string(), {"a.jpg", "sub/b.png"}, /*geom_consistency=*/false);
+  writer.Write(1, "photometric", Depth(2.5f), Normal());
+  const std::string depth_path = DepthMapPath(workspace_.string(), "sub/b.png", "photometric");
+  const std::string normal_path = NormalMapPath(workspace_.string(), "sub/b.png", "photometric");
+  ASSERT_TRUE(fs::exists(depth_path));
+  ASSERT_TRUE(fs::exists(normal_path));
+  const DenseMap depth = ReadDenseMap(depth_path);
+  EXPECT_EQ(depth.width, 4);
+  EXPECT_EQ(depth.height, 3);
+  EXPECT_EQ(depth.channels, 1);
+  EXPECT_EQ(depth.At(2, 3), 2.5f);
+  EXPECT_EQ(ReadDenseMap(normal_path).At(1, 1, 2), -1.0f);
+}
+
+TEST_F(MapWriterTest, FinalOutputFollowsGeomConsistency) {
+  MapWriter photometric(workspace_.string(), {"a.jpg"}, /*geom_consistency=*/false);
+  MapWriter geometric(workspace_.string(), {"a.jpg"}, /*geom_consistency=*/true);
+  EXPECT_EQ(photometric.final_type(), "photometric");
+  EXPECT_EQ(geometric.final_type(), "geometric");
+  EXPECT_FALSE(photometric.HasFinalOutput(0));
+
+  geometric.Write(0, "photometric", Depth(1.0f), Normal());
+  EXPECT_TRUE(photometric.HasFinalOutput(0));
+  EXPECT_FALSE(geometric.HasFinalOutput(0));  // only the first pass is done
+  geometric.Write(0, "geometric", Depth(1.0f), Normal());
+  EXPECT_TRUE(geometric.HasFinalOutput(0));
+}
+
+TEST_F(MapWriterTest, FinalOutputNeedsBothMaps) {
+  MapWriter writer(workspace_.string(), {"a.jpg"}, /*geom_consistency=*/false);
+  WriteDenseMap(DepthMapPath(workspace_.string(), "a.jpg", "photometric"), Depth(1.0f));
+  EXPECT_FALSE(writer.HasFinalOutput(0));  // an interrupted write is redone
+  WriteDenseMap(NormalMapPath(workspace_.string(), "a.jpg", "photometric"), Normal());
+  EXPECT_TRUE(writer.HasFinalOutput(0));
+}
+
+TEST_F(MapWriterTest, RejectsBackEndMistakes) {
+  MapWriter writer(workspace_.string(), {"a.jpg"}, /*geom_consistency=*/true);
+  EXPECT_THROW(writer.Write(1, "photometric", Depth(1.0f), Normal()), std::invalid_argument);
+  EXPECT_THROW(writer.Write(-1, "photometric", Depth(1.0f), Normal()), std::invalid_argument);
+  EXPECT_THROW(writer.HasFinalOutput(3), std::invalid_argument);
+  EXPECT_THROW(writer.Write(0, "fused", Depth(1.0f), Normal()), std::invalid_argument);
+  EXPECT_THROW(writer.Write(0, "geometric", Normal(), Depth(1.0f)), std::invalid_argument);
+  EXPECT_THROW(writer.Write(0, "geometric", DenseMap(5, 3, 1), Normal()), std::invalid_argument);
+  EXPECT_FALSE(fs::exists(workspace_ / "stereo"));  // nothing written
+}
+
+}  // namespace
+}  // namespace msp

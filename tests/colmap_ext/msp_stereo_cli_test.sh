@@ -1,0 +1,73 @@
+#!/bin/sh
+# Command-line behaviour of the msp_stereo executable: help, option errors and
+# a missing workspace give the documented exit codes and one-line errors.
+# Usage: msp_stereo_cli_test.sh <msp_stereo> <colmap dispatcher next to it>
+set -u
+[ $# -eq 2 ] || { echo "usage: $0 <msp_stereo> <colmap dispatcher>" >&2; exit 2; }
+MSP=$1
+DISPATCHER=$2
+readonly LIMIT=30
+TMP=$(mktemp -d) || exit 1
+trap 'rm -rf "$TMP"' EXIT
+failures=0
+
+pass() { echo "ok   $1"; }
+fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+expect_eq() {
+  if [ "$2" = "$3" ]; then pass "$1"; else
+    fail "$1"; printf '  expected: [%s]\n  actual:   [%s]\n' "$3" "$2"; fi
+}
+expect_contains() {
+  case "$2" in *"$3"*) pass "$1" ;; *) fail "$1"; printf '  [%s] not in:\n%s\n' "$3" "$2" ;; esac
+}
+# run ARGS...: sets rc, out (stdout) and err (stderr).
+run() {
+  timeout "$LIMIT" "$@" >"$TMP/out" 2>"$TMP/err"
+  rc=$?
+  out=$(cat "$TMP/out")
+  err=$(cat "$TMP/err")
+}
+# A failure is exit code 1 and exactly one "ERROR: " line on stderr.
+expect_error() {
+  expect_eq "$1: exit code" "$rc" 1
+  expect_eq "$1: one stderr line" "$(printf '%s\n' "$err" | wc -l)" 1
+  expect_contains "$1: message" "$err" "ERROR: $2"
+}
+
+run "$MSP" --help
+expect_eq "--help exit code" "$rc" 0
+expect_contains "--help lists COLMAP options" "$out" "--PatchMatchStereo.window_radius arg (=5)"
+expect_contains "--help lists MspStereo options" "$out" "--MspStereo.backend arg (=cpu)"
+run "$MSP" -h
+expect_eq "-h exit code" "$rc" 0
+
+run "$MSP" --workspace_path "$TMP" --bogus_option 1
+expect_error "unknown option" "unknown option \`--bogus_option\`"
+run "$MSP"
+expect_error "no arguments" "missing required option --workspace_path"
+run "$MSP" --workspace_path "$TMP" --PatchMatchStereo.window_step 3
+expect_error "out-of-range value" "invalid value 3 for --PatchMatchStereo.window_step"
+run "$MSP" --workspace_path "$TMP" --PatchMatchStereo.num_samples many
+expect_contains "malformed value names the option" "$err" "PatchMatchStereo.num_samples"
+expect_eq "malformed value: exit code" "$rc" 1
+
+missing="$TMP/no such workspace"
+run "$MSP" --workspace_path "$missing"
+expect_eq "missing workspace: exit code" "$rc" 1
+expect_contains "missing workspace: names the path" "$err" "ERROR: "
+expect_contains "missing workspace: names the path" "$err" "$missing"
+expect_eq "missing workspace: one stderr line" "$(printf '%s\n' "$err" | wc -l)" 1
+[ ! -e "$missing" ] && pass "missing workspace is not created" || fail "missing workspace is not created"
+
+# The same binary through the dispatcher next to it.
+run env PATH=/usr/bin:/bin "$DISPATCHER" msp_stereo --help
+expect_eq "colmap msp_stereo --help exit code" "$rc" 0
+expect_contains "colmap msp_stereo --help reaches msp_stereo" "$out" "--MspStereo.seed"
+run env PATH=/usr/bin:/bin "$DISPATCHER" msp_stereo --workspace_path "$missing"
+expect_eq "colmap msp_stereo on a missing workspace: exit code" "$rc" 1
+
+if [ "$failures" -ne 0 ]; then
+  echo "$failures check(s) failed"
+  exit 1
+fi
+echo "all checks passed"

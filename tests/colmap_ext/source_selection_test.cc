@@ -1,0 +1,179 @@
+// SelectAutoSources / ComputeDepthRange(s) (declared in patch_match_config.h)
+// on constructed models with known overlaps, angles and depths.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "patch_match_config.h"
+
+namespace msp {
+namespace {
+
+// An image looking along +z (identity rotation) with its centre at `center`:
+// t = -R C = -C.
+SparseImage ImageAt(uint32_t id, double x, double y, double z) {
+  SparseImage image;
+  image.image_id = id;
+  image.camera_id = 1;
+  image.name = "img" + std::to_string(id) + ".png";
+  image.tvec[0] = -x;
+  image.tvec[1] = -y;
+  image.tvec[2] = -z;
+  return image;
+}
+
+// Adds `count` points near the origin observed by all `image_ids`.
+void AddSharedPoints(const std::vector<uint32_t>& image_ids, int count, SparseModel* model) {
+  for (int i = 0; i < count; ++i) {
+    SparsePoint3D point;
+    point.point3D_id = model->points3D.size();
+    point.xyz[0] = 0.01 * i;
+    point.xyz[1] = -0.02 * i;
+    point.xyz[2] = 0.03 * i;
+    for (uint32_t id : image_ids) point.track.push_back({id, 0});
+    model->points3D.push_back(point);
+  }
+}
+
+// Reference 0 at distance 10 from the points; other images offset sideways
+// by a baseline b see the points at an angle of about atan(b / 10).
+SparseModel OverlapModel() {
+  SparseModel model;
+  SparseCamera camera;
+  camera.camera_id = 1;
+  camera.model_id = kSimplePinhole;
+  camera.width = 100;
+  camera.height = 100;
+  camera.params = {100, 50, 50};
+  model.cameras = {camera};
+  model.images = {
+      ImageAt(100, 0, 0, -10),     // 0: reference
+      ImageAt(101, 1, 0, -10),     // 1: ~5.7 deg, 5 shared points
+      ImageAt(102, 3, 0, -10),     // 2: ~16.7 deg, 8 shared points
+      ImageAt(103, 0.01, 0, -10),  // 3: ~0.06 deg, 10 shared points
+      ImageAt(104, -3, 0, -10),    // 4: ~16.7 deg, 8 shared points (ties with 2)
+      ImageAt(105, 0, 5, -10),     // 5: shares nothing with the reference
+  };
+  AddSharedPoints({100, 101}, 5, &model);
+  AddSharedPoints({100, 102, 104}, 8, &model);
+  AddSharedPoints({100, 103}, 10, &model);
+  AddSharedPoints({101, 105}, 20, &model);
+  return model;
+}
+
+TEST(SourceSelection, RanksBySharedPointsAfterTheAngleFilter) {
+  const SparseModel model = OverlapModel();
+  // Image 3 shares the most points but its baseline is too narrow for 1 deg;
+  // 2 and 4 tie on 8 shared points: the lower model index comes first.
+  EXPECT_EQ(SelectAutoSources(model, 0, 20, 1.0), (std::vector<int>{2, 4, 1}));
+  EXPECT_EQ(SelectAutoSources(model, 0, 2, 1.0), (std::vector<int>{2, 4}));
+  EXPECT_EQ(SelectAutoSources(model, 0, 0, 1.0), (std::vector<int>{}));
+}
+
+TEST(SourceSelection, AngleThreshold) {
+  const SparseModel model = OverlapModel();
+  EXPECT_EQ(SelectAutoSources(model, 0, 20, 0.0), (std::vector<int>{3, 2, 4, 1}));
+  EXPECT_EQ(SelectAutoSources(model, 0, 20, 10.0), (std::vector<int>{2, 4}));
+  EXPECT_EQ(SelectAutoSources(model, 0, 20, 20.0), (std::vector<int>{}));
+}
+
+TEST(SourceSelection, UsesThe75thPercentileAngle) {
+  SparseModel model = OverlapModel();
+  model.points3D.clear();
+  // Image 2 sees 4 points with the reference: the far ones (z = 1000) give
+  // ~0.17 deg, the near ones ~16.7 deg. Sorted angles [far, far, near, near]:
+  // the 75th percentile is element round(0.75 * 3) = 2, a near one.
+  AddSharedPoints({100, 102}, 2, &model);
+  for (int i = 0; i < 2; ++i) {
+    SparsePoint3D far;
+    far.point3D_id = 100 + i;
+    far.xyz[2] = 1000.0 + i;
+    far.track = {{100, 0}, {102, 0}};
+    model.points3D.push_back(far);
+  }
+  EXPECT_EQ(SelectAutoSources(model, 0, 5, 5.0), (std::vector<int>{2}));
+  // With six far points, element round(0.75 * 7) = 5 of 8 is a far one.
+  for (int i = 0; i < 4; ++i) {
+    SparsePoint3D far;
+    far.point3D_id = 200 + i;
+    far.xyz[2] = 1002.0 + i;
+    far.track = {{100, 0}, {102, 0}};
+    model.points3D.push_back(far);
+  }
+  EXPECT_EQ(SelectAutoSources(model, 0, 5, 5.0), (std::vector<int>{}));
+}
+
+TEST(SourceSelection, BatchMatchesSingle) {
+  const SparseModel model = OverlapModel();
+  const std::vector<std::vector<int>> batch =
+      SelectAutoSourcesBatch(model, {20, 20, 0, 1, 20, 20}, 1.0);
+  ASSERT_EQ(batch.size(), model.images.size());
+  EXPECT_EQ(batch[0], SelectAutoSources(model, 0, 20, 1.0));
+  EXPECT_EQ(batch[1], SelectAutoSources(model, 1, 20, 1.0));
+  EXPECT_TRUE(batch[2].empty());  // not requested
+  EXPECT_EQ(batch[3], SelectAutoSources(model, 3, 1, 1.0));
+  EXPECT_EQ(batch[4], (std::vector<int>{0, 2}));  // 8 shared points each
+  EXPECT_EQ(batch[5], (std::vector<int>{1}));
+}
+
+TEST(DepthRange, PercentilesOfObservedDepths) {
+  SparseModel model;
+  model.images = {ImageAt(1, 0, 0, 0), ImageAt(2, 0, 0, -100), ImageAt(3, 0, 0, 0)};
+  // Image 1 observes z = 1..200, plus points behind it that must be ignored.
+  for (int z = 200; z >= 1; --z) {
+    SparsePoint3D point;
+    point.point3D_id = z;
+    point.xyz[0] = 0.5 * z;  // off-axis: depth is z, not the distance
+    point.xyz[2] = z;
+    point.track = {{1, 0}, {2, 0}};
+    model.points3D.push_back(point);
+  }
+  for (int i = 0; i < 50; ++i) {
+    SparsePoint3D behind;
+    behind.point3D_id = 1000 + i;
+    behind.xyz[2] = -5.0 - i;
+    behind.track = {{1, 0}};
+    model.points3D.push_back(behind);
+  }
+  // A point no track of image 1 contains does not count, however near.
+  SparsePoint3D other;
+  other.point3D_id = 5000;
+  other.xyz[2] = 0.001;
+  other.track = {{2, 0}};
+  model.points3D.push_back(other);
+
+  // 200 depths 1..200: indices 200*0.01 = 2 and 200*0.99 = 198 -> 3 and 199.
+  const auto range = ComputeDepthRange(model, 0);
+  EXPECT_FLOAT_EQ(range.first, 3.0f * 0.75f);
+  EXPECT_FLOAT_EQ(range.second, 199.0f * 1.25f);
+  // Image 2 sits 100 behind: 201 depths 100.001, 101..300; indices
+  // 201*0.01 -> 2 and 201*0.99 -> 198, i.e. 102 and 298.
+  const auto range2 = ComputeDepthRange(model, 1);
+  EXPECT_FLOAT_EQ(range2.first, 102.0f * 0.75f);
+  EXPECT_FLOAT_EQ(range2.second, 298.0f * 1.25f);
+  // No observations at all.
+  const auto none = ComputeDepthRange(model, 2);
+  EXPECT_EQ(none.first, -1.0);
+  EXPECT_EQ(none.second, -1.0);
+  EXPECT_EQ(ComputeDepthRanges(model)[0], range);
+}
+
+TEST(DepthRange, SmallCountsUseTheFirstAndLastIndices) {
+  SparseModel model;
+  model.images = {ImageAt(1, 0, 0, 0)};
+  for (int z : {4, 2, 8}) {
+    SparsePoint3D point;
+    point.point3D_id = z;
+    point.xyz[2] = z;
+    point.track = {{1, 0}};
+    model.points3D.push_back(point);
+  }
+  // 3 * 0.01 -> 0 and 3 * 0.99 -> 2.
+  const auto range = ComputeDepthRange(model, 0);
+  EXPECT_FLOAT_EQ(range.first, 2.0f * 0.75f);
+  EXPECT_FLOAT_EQ(range.second, 8.0f * 1.25f);
+}
+
+}  // namespace
+}  // namespace msp

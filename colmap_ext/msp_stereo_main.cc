@@ -35,6 +35,16 @@ void WarnAboutIgnoredOptions(const StereoCommandOptions& options) {
     std::cout << "WARNING: --PatchMatchStereo.write_consistency_graph is ignored: no "
                  "consistency graphs are written (no COLMAP command reads them)\n";
   }
+  const PatchMatchStereoOptions defaults;
+  if (options.patch_match.window_step != defaults.window_step) {
+    std::cout << "WARNING: --PatchMatchStereo.window_step is ignored (the window sampling "
+                 "step is --MspStereo.window_step)\n";
+  }
+  if (!options.msp.bilateral_ncc && (options.patch_match.sigma_spatial != defaults.sigma_spatial ||
+                                     options.patch_match.sigma_color != defaults.sigma_color)) {
+    std::cout << "WARNING: --PatchMatchStereo.sigma_spatial / sigma_color only apply with "
+                 "--MspStereo.bilateral_ncc true\n";
+  }
   if (options.msp.backend == "cpu" && options.patch_match.gpu_index != "-1") {
     std::cout << "WARNING: --PatchMatchStereo.gpu_index is ignored by the cpu back-end "
                  "(use --MspStereo.backend cuda)\n";

@@ -91,6 +91,9 @@ TEST(OptionCheck, EveryOutOfRangeValueNamesOptionValueAndRange) {
       {"PatchMatchStereo.cache_size", "0", "> 0", [](auto* o) { o->patch_match.cache_size = 0; }},
       {"MspStereo.backend", "`opencl`", "{cpu, cuda}", [](auto* o) { o->msp.backend = "opencl"; }},
       {"MspStereo.seed", "-3", ">= 0", [](auto* o) { o->msp.seed = -3; }},
+      {"MspStereo.window_step", "3", "[1, 2]", [](auto* o) { o->msp.window_step = 3; }},
+      {"MspStereo.coarsest_image_size", "10", "[64, ",
+       [](auto* o) { o->msp.coarsest_image_size = 10; }},
       {"workspace_format", "`CMP-MVS`", "{COLMAP, PMVS}",
        [](auto* o) { o->workspace_format = "CMP-MVS"; }},
   };

@@ -40,7 +40,9 @@ const std::vector<std::string> kColmapPatchMatchFields = {
     "allow_missing_files",
     "write_consistency_graph",
 };
-const std::vector<std::string> kMspFields = {"backend", "seed", "num_threads", "mask_path"};
+const std::vector<std::string> kMspFields = {
+    "backend",     "seed",         "num_threads", "mask_path", "coarsest_image_size",
+    "window_step", "bilateral_ncc"};
 const std::vector<std::string> kTopLevel = {
     "workspace_path", "workspace_format", "pmvs_option_name", "config_path",
     "project_path",   "random_seed",      "log_to_stderr",    "log_level"};

@@ -1,0 +1,40 @@
+// Geometric consistency with a source view's depth map (previous pass): the
+// reference pixel's 3D point is projected into the source, lifted with the
+// source's depth there and projected back; the cost is the distance between
+// the pixel and where it comes back, in reference pixels.
+#pragma once
+
+#include <cmath>
+
+#include "core/camera.h"
+#include "core/hd.h"
+#include "core/image_view.h"
+#include "core/vec.h"
+
+namespace msp {
+namespace core {
+
+// Forward-backward reprojection error in pixels; `max_error` when the point
+// leaves the source image or the source has no depth there.
+MSP_HD float ReprojectionError(const Camera& ref, const Camera& src, const ImageView& src_depth,
+                               int col, int row, float depth, float max_error) {
+  const Vec3 X = CamToWorld(ref, BackProject(ref, static_cast<float>(col), static_cast<float>(row), depth));
+  float u, v;
+  if (!ProjectCamPoint(src, WorldToCam(src, X), &u, &v)) return max_error;
+  // The source map may be at another resolution than the source camera.
+  const float su = u * src_depth.width / src.width;
+  const float sv = v * src_depth.height / src.height;
+  const int c = static_cast<int>(floorf(su + 0.5f));
+  const int r = static_cast<int>(floorf(sv + 0.5f));
+  if (!src_depth.Contains(c, r)) return max_error;
+  const float src_d = src_depth.At(c, r);
+  if (!(src_d > 0.0f)) return max_error;
+  const Vec3 Y = CamToWorld(src, BackProject(src, u, v, src_d));
+  float x, y;
+  if (!ProjectCamPoint(ref, WorldToCam(ref, Y), &x, &y)) return max_error;
+  const float dx = x - col, dy = y - row;
+  return fminf(sqrtf(dx * dx + dy * dy), max_error);
+}
+
+}  // namespace core
+}  // namespace msp

@@ -1,0 +1,269 @@
+// The per-pixel steps of conventional PatchMatch MVS (ACMM lineage), written
+// once for the CPU driver and the CUDA kernels: scoring a hypothesis in every
+// view, propagation with view selection, refinement, the local disparity sweep
+// and COLMAP-style output filtering. All state lives in PassParams' arrays.
+#pragma once
+
+#include <cstdint>
+
+#include "core/camera.h"
+#include "core/checkerboard.h"
+#include "core/geometric_cost.h"
+#include "core/hd.h"
+#include "core/homography.h"
+#include "core/image_view.h"
+#include "core/limits.h"
+#include "core/ncc.h"
+#include "core/plane.h"
+#include "core/rng.h"
+#include "core/view_selection.h"
+
+namespace msp {
+namespace core {
+
+// Views whose costs average into the initial cost of a hypothesis (no view
+// selection exists yet): the best few, as a pixel is rarely seen by all.
+constexpr int kInitialTopViews = 3;
+// Draw stream ids: separate streams for the steps of one pixel update.
+constexpr uint32_t kStreamSelect = 1, kStreamRefine = 2, kStreamRestart = 3;
+
+struct SourceView {
+  Camera camera;
+  RelativePose rel;  // reference camera frame -> this camera's frame
+  ImageView image;
+  ImageView depth;   // previous-pass depth (geometric passes), else data == nullptr
+};
+
+// Per-pixel state of the reference image: plane, aggregated cost, view mask.
+struct PixelStateView {
+  float* depth;
+  float* normal;  // 3 planes (nx, ny, nz) of width * height
+  float* cost;
+  uint32_t* mask;
+  int width;
+  int height;
+  MSP_HD int Index(int col, int row) const { return row * width + col; }
+  MSP_HD PlaneHypothesis Get(int i) const {
+    const int n = width * height;
+    return PlaneHypothesis{depth[i], Vec3{normal[i], normal[n + i], normal[2 * n + i]}};
+  }
+  MSP_HD void Set(int i, const PlaneHypothesis& h) const {
+    const int n = width * height;
+    depth[i] = h.depth;
+    normal[i] = h.normal.x;
+    normal[n + i] = h.normal.y;
+    normal[2 * n + i] = h.normal.z;
+  }
+};
+
+struct PassParams {
+  Camera ref_camera;
+  ImageView ref_image;
+  SourceView src[kMaxSourceViews];
+  int num_src;
+  NccParams ncc;
+  float depth_min;
+  float depth_max;
+  int geometric;         // 1: add the geometric consistency term
+  float geom_lambda;     // weight of the reprojection error
+  float geom_max_error;  // pixels; the error is clamped here
+  int num_samples;       // Monte-Carlo view draws
+  float perturb_depth;   // relative depth perturbation of refinement
+  float perturb_normal;  // radians
+  uint32_t seed;
+  uint32_t image_id;
+  uint32_t pass_id;
+  PixelStateView state;
+};
+
+MSP_HD bool DepthInRange(const PassParams& p, float depth) {
+  return depth >= p.depth_min && depth <= p.depth_max;
+}
+
+// Cost of hypothesis h at pixel (col, row) in source view j.
+MSP_HD float ViewCost(const PassParams& p, int j, int col, int row, const PlaneHypothesis& h) {
+  const SourceView& s = p.src[j];
+  const float dist = PlaneDistance(p.ref_camera, col, row, h);
+  if (!(dist > 0.0f)) return kMaxCost;
+  const Mat3 H = ComputeHomography(p.ref_camera, s.camera, s.rel, h.normal, dist);
+  float cost = NccCost(p.ref_image, s.image, H, col, row, p.ncc);
+  if (p.geometric && s.depth.data != nullptr) {
+    cost += p.geom_lambda * ReprojectionError(p.ref_camera, s.camera, s.depth, col, row, h.depth,
+                                              p.geom_max_error);
+  }
+  return cost;
+}
+
+// Costs of h in every view whose weight is non-zero (all views when weights is null).
+MSP_HD void ViewCosts(const PassParams& p, int col, int row, const PlaneHypothesis& h,
+                      const float* weights, float* costs) {
+  for (int j = 0; j < p.num_src; ++j) {
+    costs[j] = (weights == nullptr || weights[j] > 0.0f) ? ViewCost(p, j, col, row, h) : kMaxCost;
+  }
+}
+
+// Mean of the k smallest costs (k = kInitialTopViews or fewer views).
+MSP_HD float TopViewsCost(const float* costs, int num_views) {
+  float best[kInitialTopViews];
+  const int k = num_views < kInitialTopViews ? num_views : kInitialTopViews;
+  for (int i = 0; i < k; ++i) best[i] = 3.0f * kMaxCost;
+  for (int j = 0; j < num_views; ++j) {
+    float c = costs[j];
+    for (int i = 0; i < k; ++i) {
+      if (c < best[i]) {
+        const float t = best[i];
+        best[i] = c;
+        c = t;
+      }
+    }
+  }
+  float sum = 0.0f;
+  for (int i = 0; i < k; ++i) sum += best[i];
+  return k > 0 ? sum / k : kMaxCost;
+}
+
+// Random plane for a pixel (round 0 initialisation).
+MSP_HD void InitializePixel(const PassParams& p, int col, int row) {
+  const int i = p.state.Index(col, row);
+  Rng rng = MakeRng(RngKey(p.seed, p.image_id, p.pass_id, 0u, static_cast<uint32_t>(i)));
+  p.state.Set(i, RandomHypothesis(p.ref_camera, col, row, p.depth_min, p.depth_max, &rng));
+  p.state.mask[i] = 0u;
+}
+
+// Recomputes the stored cost of the current plane (after initialisation,
+// upsampling, or when a new pass changes the cost function).
+MSP_HD void ScorePixel(const PassParams& p, int col, int row) {
+  const int i = p.state.Index(col, row);
+  const PlaneHypothesis h = p.state.Get(i);
+  float costs[kMaxSourceViews];
+  if (!(h.depth > 0.0f)) {
+    p.state.cost[i] = kMaxCost;
+    return;
+  }
+  ViewCosts(p, col, row, h, nullptr, costs);
+  p.state.cost[i] = TopViewsCost(costs, p.num_src);
+}
+
+// The plane proposed by region `region`: the lowest-cost pixel of the region,
+// its plane continued to (col, row). False when the region has no pixel.
+MSP_HD bool RegionCandidate(const PassParams& p, int col, int row, int region,
+                            PlaneHypothesis* out) {
+  const PixelStateView& s = p.state;
+  float best = 1e30f;
+  int best_col = -1, best_row = -1;
+  const int n = RegionSize(region);
+  for (int k = 0; k < n; ++k) {
+    int dx, dy;
+    RegionOffset(region, k, &dx, &dy);
+    const int c = col + dx, r = row + dy;
+    if (c < 0 || r < 0 || c >= s.width || r >= s.height) continue;
+    const int q = s.Index(c, r);
+    if (s.depth[q] > 0.0f && s.cost[q] < best) {
+      best = s.cost[q];
+      best_col = c;
+      best_row = r;
+    }
+  }
+  if (best_col < 0) return false;
+  const PlaneHypothesis h = s.Get(s.Index(best_col, best_row));
+  out->normal = h.normal;
+  out->depth = PropagatedDepth(p.ref_camera, best_col, best_row, h, col, row);
+  return DepthInRange(p, out->depth) && Dot(out->normal, ViewRay(p.ref_camera, col, row)) < 0.0f;
+}
+
+// Refinement hypotheses: mixes of the current, a perturbed and a random depth
+// and normal (ACMM).
+MSP_HD PlaneHypothesis RefinementCandidate(const PassParams& p, int col, int row,
+                                           const PlaneHypothesis& cur, int k, Rng* rng) {
+  const Camera& cam = p.ref_camera;
+  PlaneHypothesis h = cur;
+  const float pert_depth =
+      cur.depth * (1.0f + rng->Uniform(-p.perturb_depth, p.perturb_depth));
+  switch (k) {
+    case 0:  // perturbed depth and normal
+      h.depth = pert_depth;
+      h.normal = PerturbNormal(cam, col, row, cur.normal, p.perturb_normal, rng);
+      break;
+    case 1:  // random depth, current normal
+      h.depth = rng->Uniform(p.depth_min, p.depth_max);
+      break;
+    case 2:  // current depth, random normal
+      h.normal = RandomNormal(cam, col, row, rng);
+      break;
+    case 3:  // perturbed depth, current normal
+      h.depth = pert_depth;
+      break;
+    default:  // current depth, perturbed normal
+      h.normal = PerturbNormal(cam, col, row, cur.normal, p.perturb_normal, rng);
+      break;
+  }
+  return h;
+}
+
+// One red-black update of pixel (col, row): propagation from the 8 regions
+// with view selection, then refinement on the selected views.
+MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
+  const PixelStateView& s = p.state;
+  const int i = s.Index(col, row);
+  const uint32_t pixel = static_cast<uint32_t>(i);
+  constexpr int kRows = kNumPropagationCandidates + 1;  // + the current plane
+  PlaneHypothesis cand[kRows];
+  bool has[kRows];
+  float costs[kRows * kMaxSourceViews];
+  for (int k = 0; k < kNumPropagationCandidates; ++k) {
+    has[k] = RegionCandidate(p, col, row, k, &cand[k]);
+  }
+  cand[kNumPropagationCandidates] = s.Get(i);
+  has[kNumPropagationCandidates] = cand[kNumPropagationCandidates].depth > 0.0f;
+  for (int k = 0; k < kRows; ++k) {
+    float* row_costs = costs + k * kMaxSourceViews;
+    if (has[k]) {
+      ViewCosts(p, col, row, cand[k], nullptr, row_costs);
+    } else {
+      for (int j = 0; j < p.num_src; ++j) row_costs[j] = kMaxCost;
+    }
+  }
+  Rng select_rng = MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamSelect, pixel));
+  float weights[kMaxSourceViews];
+  const uint32_t mask = SelectViews(costs, kNumPropagationCandidates, p.num_src, kMaxSourceViews,
+                                    iteration, s.mask[i], p.num_samples, &select_rng, weights);
+  int best = -1;
+  float best_cost = 1e30f;
+  for (int k = 0; k < kRows; ++k) {
+    if (!has[k]) continue;
+    const float c = AggregateCost(costs + k * kMaxSourceViews, weights, p.num_src);
+    if (c < best_cost) {
+      best_cost = c;
+      best = k;
+    }
+  }
+  PlaneHypothesis cur;
+  if (best < 0) {  // nothing valid around and no plane: start afresh
+    Rng init_rng =
+        MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamRestart, pixel));
+    cur = RandomHypothesis(p.ref_camera, col, row, p.depth_min, p.depth_max, &init_rng);
+    float c[kMaxSourceViews];
+    ViewCosts(p, col, row, cur, weights, c);
+    best_cost = AggregateCost(c, weights, p.num_src);
+  } else {
+    cur = cand[best];
+  }
+  Rng refine_rng = MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamRefine, pixel));
+  for (int k = 0; k < kNumRefinementCandidates; ++k) {
+    const PlaneHypothesis h = RefinementCandidate(p, col, row, cur, k, &refine_rng);
+    if (!DepthInRange(p, h.depth)) continue;
+    float c[kMaxSourceViews];
+    ViewCosts(p, col, row, h, weights, c);
+    const float agg = AggregateCost(c, weights, p.num_src);
+    if (agg < best_cost) {
+      best_cost = agg;
+      cur = h;
+    }
+  }
+  s.Set(i, cur);
+  s.cost[i] = best_cost;
+  s.mask[i] = mask;
+}
+
+}  // namespace core
+}  // namespace msp

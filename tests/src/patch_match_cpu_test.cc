@@ -1,0 +1,112 @@
+#include "patch_match_cpu.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "synthetic_views.h"
+
+namespace msp {
+namespace {
+
+// Keeps every written map in memory.
+class MemorySink : public MapSink {
+ public:
+  bool HasFinalOutput(int view) const override { return done.count(view) > 0; }
+  void Write(int view, const std::string& type, const DenseMap& depth,
+             const DenseMap& normal) override {
+    maps[{view, type}] = {depth, normal};
+  }
+  std::map<std::pair<int, std::string>, std::pair<DenseMap, DenseMap>> maps;
+  std::map<int, bool> done;
+};
+
+constexpr float kPlaneDepth = 2.0f;
+
+std::vector<Problem> AllProblems(int num_views) {
+  std::vector<Problem> problems;
+  for (int v = 0; v < num_views; ++v) {
+    Problem p;
+    p.ref = v;
+    for (int s = 0; s < num_views; ++s) {
+      if (s != v) p.srcs.push_back(s);
+    }
+    p.depth_min = 1.0f;
+    p.depth_max = 4.0f;
+    problems.push_back(p);
+  }
+  return problems;
+}
+
+TEST(PatchMatchCpu, RecoversFrontoParallelPlane) {
+  const std::vector<View> views = testing_support::RenderFrontoParallelPlane(96, 72, 4, kPlaneDepth, 0.25f);
+  const std::vector<Problem> problems = AllProblems(4);
+  PatchMatchStereoOptions pm;
+  MspStereoOptions msp;
+  msp.num_threads = 2;
+  MemorySink sink;
+  RunPatchMatchCpu(views, problems, pm, msp, "/tmp", sink);
+  const auto it = sink.maps.find({0, std::string("geometric")});
+  ASSERT_NE(it, sink.maps.end());
+  const DenseMap& depth = it->second.first;
+  const DenseMap& normal = it->second.second;
+  int valid = 0, accurate = 0, total = 0;
+  // Away from the border, where every source sees the plane.
+  for (int r = 12; r < depth.height - 12; ++r) {
+    for (int c = 12; c < depth.width - 12; ++c) {
+      ++total;
+      const float d = depth.At(r, c);
+      if (d <= 0.0f) continue;
+      ++valid;
+      if (std::fabs(d - kPlaneDepth) < /*max_rel_depth_error=*/0.005f * kPlaneDepth) ++accurate;
+      const float nz = normal.At(r, c, 2);
+      EXPECT_NEAR(std::sqrt(normal.At(r, c, 0) * normal.At(r, c, 0) +
+                            normal.At(r, c, 1) * normal.At(r, c, 1) + nz * nz),
+                  1.0f, 1e-4f);
+      EXPECT_LT(nz, 0.0f);  // facing the camera
+    }
+  }
+  EXPECT_GT(valid, 0.9 * total);
+  EXPECT_GT(accurate, 0.95 * valid);
+  EXPECT_TRUE(sink.maps.count({0, std::string("photometric")}));
+}
+
+TEST(PatchMatchCpu, DeterministicAcrossThreadCounts) {
+  const std::vector<View> views = testing_support::RenderFrontoParallelPlane(64, 48, 3, kPlaneDepth, 0.25f);
+  const std::vector<Problem> problems = AllProblems(3);
+  PatchMatchStereoOptions pm;
+  MspStereoOptions msp;
+  msp.seed = 7;
+  std::vector<MemorySink> sinks(3);
+  const int threads[3] = {1, 2, 2};
+  for (int k = 0; k < 3; ++k) {
+    msp.num_threads = threads[k];
+    RunPatchMatchCpu(views, problems, pm, msp, "/tmp", sinks[k]);
+  }
+  for (int k = 1; k < 3; ++k) {
+    ASSERT_EQ(sinks[k].maps.size(), sinks[0].maps.size());
+    for (const auto& entry : sinks[0].maps) {
+      const auto& other = sinks[k].maps.at(entry.first);
+      EXPECT_EQ(entry.second.first.data, other.first.data);
+      EXPECT_EQ(entry.second.second.data, other.second.data);
+    }
+  }
+}
+
+TEST(PatchMatchCpu, SkipsImagesWithFinalOutputs) {
+  const std::vector<View> views = testing_support::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
+  PatchMatchStereoOptions pm;
+  pm.geom_consistency = false;
+  MspStereoOptions msp;
+  MemorySink sink;
+  for (int v = 0; v < 3; ++v) sink.done[v] = true;
+  RunPatchMatchCpu(views, AllProblems(3), pm, msp, "/tmp", sink);
+  EXPECT_TRUE(sink.maps.empty());
+}
+
+}  // namespace
+}  // namespace msp

@@ -109,9 +109,9 @@ TEST(DenseMapIo, TruncatedFile) {
 TEST(DenseMapIo, TrailingBytes) {
   TempDir dir;
   test::WriteRaw(dir / "n.bin", HandMadeNormalMapBytes() + "xy");
-  EXPECT_NE(InputErrorMessage([&] { ReadDenseMap(dir / "n.bin"); })
-                .find("does not match its header"),
-            std::string::npos);
+  EXPECT_NE(
+      InputErrorMessage([&] { ReadDenseMap(dir / "n.bin"); }).find("does not match its header"),
+      std::string::npos);
 }
 
 TEST(DenseMapIo, HeaderLargerThanFile) {
@@ -130,17 +130,16 @@ TEST(DenseMapIo, GarbageHeader) {
         std::string("99999999999999999999&1&1&")}) {
     test::WriteRaw(dir / "g.bin", bytes);
     const std::string message = InputErrorMessage([&] { ReadDenseMap(dir / "g.bin"); });
-    EXPECT_NE(message.find("g.bin: not a COLMAP depth/normal map"), std::string::npos)
-        << message;
+    EXPECT_NE(message.find("g.bin: not a COLMAP depth/normal map"), std::string::npos) << message;
   }
 }
 
 TEST(DenseMapIo, InvalidHeaderValues) {
   TempDir dir;
   test::WriteRaw(dir / "z.bin", "0&3&1&");
-  EXPECT_NE(InputErrorMessage([&] { ReadDenseMap(dir / "z.bin"); })
-                .find("invalid map header 0&3&1&"),
-            std::string::npos);
+  EXPECT_NE(
+      InputErrorMessage([&] { ReadDenseMap(dir / "z.bin"); }).find("invalid map header 0&3&1&"),
+      std::string::npos);
   test::WriteRaw(dir / "c.bin", "1&1&9&" + std::string(36, '\0'));
   EXPECT_NE(InputErrorMessage([&] { ReadDenseMap(dir / "c.bin"); }).find("channels 1..4"),
             std::string::npos);
@@ -148,8 +147,9 @@ TEST(DenseMapIo, InvalidHeaderValues) {
 
 TEST(DenseMapIo, MissingFile) {
   TempDir dir;
-  EXPECT_NE(InputErrorMessage([&] { ReadDenseMap(dir / "none.bin"); })
-                .find("none.bin: file does not exist"),
+  EXPECT_NE(InputErrorMessage([&] {
+              ReadDenseMap(dir / "none.bin");
+            }).find("none.bin: file does not exist"),
             std::string::npos);
 }
 

@@ -74,19 +74,19 @@ TEST(PatchMatchConfig, SpecialTokensOnlyWithTheirExactShape) {
 }
 
 TEST(PatchMatchConfig, InvalidAutoCount) {
-  EXPECT_NE(InputErrorMessage([] { Parse("a.jpg\n__auto__, many\n"); })
-                .find("cfg:2: invalid number of source images `many` after __auto__"),
+  EXPECT_NE(InputErrorMessage([] {
+              Parse("a.jpg\n__auto__, many\n");
+            }).find("cfg:2: invalid number of source images `many` after __auto__"),
             std::string::npos);
-  EXPECT_NE(InputErrorMessage([] { Parse("a.jpg\n__auto__, -1\n"); })
-                .find("invalid number of source images `-1`"),
+  EXPECT_NE(InputErrorMessage([] {
+              Parse("a.jpg\n__auto__, -1\n");
+            }).find("invalid number of source images `-1`"),
             std::string::npos);
 }
 
 TEST(PatchMatchConfig, OddNumberOfLines) {
-  const std::string message =
-      InputErrorMessage([] { Parse("a.jpg\n__all__\n# c\n\nb.jpg\n"); });
-  EXPECT_NE(message.find("cfg:5: reference image `b.jpg` has no source line"),
-            std::string::npos)
+  const std::string message = InputErrorMessage([] { Parse("a.jpg\n__all__\n# c\n\nb.jpg\n"); });
+  EXPECT_NE(message.find("cfg:5: reference image `b.jpg` has no source line"), std::string::npos)
       << message;
 }
 
@@ -97,8 +97,9 @@ TEST(PatchMatchConfig, EmptyFileHasNoProblems) {
 
 TEST(PatchMatchConfig, MissingFile) {
   test::TempDir dir;
-  EXPECT_NE(InputErrorMessage([&] { ParsePatchMatchConfig(dir / "patch-match.cfg"); })
-                .find("patch-match.cfg does not exist"),
+  EXPECT_NE(InputErrorMessage([&] {
+              ParsePatchMatchConfig(dir / "patch-match.cfg");
+            }).find("patch-match.cfg does not exist"),
             std::string::npos);
   test::WriteRaw(dir / "p.cfg", "x.png\n__all__\n");
   EXPECT_EQ(ParsePatchMatchConfig(dir / "p.cfg").size(), 1u);

@@ -215,6 +215,28 @@ TEST(OptionParser, ReadsIniWithBothSections) {
   EXPECT_EQ(o.patch_match.num_samples, 15);  // untouched default
 }
 
+TEST(OptionParser, ReadsColmapProjectIni) {
+  // An excerpt of what `colmap project_generator` (3.8) writes: top-level keys,
+  // sections of other commands and a full [PatchMatchStereo] section.
+  const IniFile ini(
+      "log_to_stderr=false\nrandom_seed=0\nlog_level=2\ndatabase_path=\nimage_path=\n"
+      "[ImageReader]\nsingle_camera=false\n"
+      "[PatchMatchStereo]\ngeom_consistency=true\nfilter=true\nallow_missing_files=false\n"
+      "write_consistency_graph=false\nmax_image_size=2400\nwindow_radius=5\nwindow_step=1\n"
+      "num_samples=15\nnum_iterations=5\nfilter_min_num_consistent=2\ndepth_min=-1\n"
+      "depth_max=-1\nsigma_spatial=-1\nsigma_color=0.20000000298023224\n"
+      "ncc_sigma=0.60000002384185791\nmin_triangulation_angle=1\n"
+      "incident_angle_sigma=0.89999997615814209\n"
+      "geom_consistency_regularizer=0.30000001192092896\ngeom_consistency_max_cost=3\n"
+      "filter_min_ncc=0.10000000149011612\nfilter_min_triangulation_angle=3\n"
+      "filter_geom_consistency_max_cost=1\ncache_size=32\ngpu_index=-1\n"
+      "[StereoFusion]\nuse_cache=false\nmax_image_size=2400\n");
+  const StereoCommandOptions o = Parse({"--project_path", ini.path(), "--workspace_path", "w"});
+  EXPECT_EQ(o.patch_match.max_image_size, 2400);
+  EXPECT_NEAR(o.patch_match.sigma_color, 0.2, 1e-6);
+  EXPECT_TRUE(o.patch_match.geom_consistency);
+}
+
 TEST(OptionParser, CommandLineOverridesIni) {
   const IniFile ini(
       "workspace_path=/from/ini\n"

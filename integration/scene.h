@@ -1,0 +1,89 @@
+// The bundled test scene: a closed room (walls, floor, ceiling) with a few
+// objects, described analytically so that rays can be cast exactly. Geometry
+// and materials only; images and ground truth are made by renderer.h.
+//
+// World frame: metres, z up, the floor is z = 0 and the inspected corner is at
+// the origin (walls x = 0 and y = 0).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace msp {
+namespace scene {
+
+enum class Texture {
+  kPlain,    // albedo1 with a faint low-frequency variation (walls, floor)
+  kChecker,  // 3D checker of albedo1 / albedo2 with period `scale`
+  kNoise,    // fractal value noise blending albedo1 and albedo2, feature size `scale`
+  kStripes,  // horizontal bands of albedo1 / albedo2, period `scale`
+};
+
+struct Material {
+  Texture texture = Texture::kPlain;
+  Eigen::Vector3d albedo1 = Eigen::Vector3d::Constant(0.7);
+  Eigen::Vector3d albedo2 = Eigen::Vector3d::Constant(0.3);
+  double scale = 0.1;      // metres, see Texture
+  double variation = 0.0;  // kPlain: relative amplitude of the low-frequency variation
+  // Ground-truth label: surfaces with no usable texture (MSP-MVS's target).
+  bool textureless = false;
+};
+
+enum class ShapeType {
+  kRoom,      // axis-aligned box seen from inside; face_material per face
+  kBox,       // axis-aligned box seen from outside
+  kSphere,    // center, radius
+  kCylinder,  // vertical: axis through center.xy, z in [lo.z, hi.z], radius
+};
+
+// Face order of kRoom: -x, +x, -y, +y, -z (floor), +z (ceiling).
+constexpr int kNumRoomFaces = 6;
+
+struct Shape {
+  ShapeType type = ShapeType::kBox;
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero();
+  Eigen::Vector3d hi = Eigen::Vector3d::Zero();
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double radius = 0.0;
+  int material = 0;
+  int face_material[kNumRoomFaces] = {0, 0, 0, 0, 0, 0};
+};
+
+struct Hit {
+  double t = 0.0;          // ray parameter (the direction is unit length)
+  Eigen::Vector3d point;   // world point
+  Eigen::Vector3d normal;  // unit, facing the ray origin
+  int material = -1;
+};
+
+struct Light {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  double diffuse = 0.6;
+  double ambient = 0.35;
+};
+
+class Scene {
+ public:
+  std::vector<Material> materials;
+  std::vector<Shape> shapes;
+  Light light;
+
+  // Nearest intersection with t > min_t along origin + t * dir (dir unit length).
+  bool Intersect(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, Hit* hit,
+                 double min_t = 1e-9) const;
+
+  // Linear-space reflectance of `material` at world point p.
+  Eigen::Vector3d Albedo(int material, const Eigen::Vector3d& p) const;
+
+  // Lambertian shading (point light + ambient) of a hit, before camera noise.
+  Eigen::Vector3d Radiance(const Hit& hit) const;
+};
+
+// Room of kRoomSize with the textured and the camouflaged objects.
+Scene MakeRoomScene();
+
+// Size of the room of MakeRoomScene (x, y, z extent in metres).
+Eigen::Vector3d RoomSize();
+
+}  // namespace scene
+}  // namespace msp

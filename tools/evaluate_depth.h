@@ -1,0 +1,47 @@
+// Depth / normal map figures against ground truth, per image and averaged.
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "dense_map.h"
+
+namespace msp {
+namespace eval {
+
+// Figures over one set of pixels (the whole image or its textureless part).
+// "Complete" counts over all ground-truth pixels (missing predictions count
+// as failures); "accurate" counts over valid predictions only.
+struct RegionMetrics {
+  int num_gt = 0;                        // pixels with ground truth
+  int num_valid = 0;                     // of those, with a valid prediction (finite depth > 0)
+  double valid_fraction = 0.0;           // num_valid / num_gt
+  double complete[2] = {0, 0};           // fraction of num_gt within threshold k
+  double accurate[2] = {0, 0};           // fraction of num_valid within threshold k
+  double median_rel_error = 0.0;         // |d - d_gt| / d_gt over valid predictions
+  double median_normal_error_deg = 0.0;  // over valid predictions with a non-zero normal
+};
+
+struct DepthMapMetrics {
+  std::string name;
+  bool missing = false;  // no prediction file: every figure is 0
+  int width = 0;         // prediction size
+  int height = 0;
+  RegionMetrics all;
+  RegionMetrics textureless;
+};
+
+// The prediction may be smaller than the ground truth (max_image_size): the
+// ground truth is sampled nearest-neighbour at each predicted pixel, the
+// mapping COLMAP's fusion uses (intrinsics scaled per axis). `normal` may be
+// empty (then normal errors are 0). `textureless` is CV_8UC1 at GT size.
+DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
+                                 const DenseMap& gt_depth, const DenseMap& gt_normal,
+                                 const cv::Mat& textureless, const double thresholds[2]);
+
+// Mean over images of every figure (missing maps count as zeros).
+DepthMapMetrics AverageMetrics(const std::vector<DepthMapMetrics>& maps);
+
+}  // namespace eval
+}  // namespace msp

@@ -1,0 +1,80 @@
+#include "evaluate_ground_truth.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "errors.h"
+
+namespace msp {
+namespace eval {
+namespace {
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw InputError("cannot read ground-truth file " + path);
+  std::ostringstream s;
+  s << file.rdbuf();
+  return s.str();
+}
+
+std::string Trim(const std::string& s) {
+  const size_t b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
+}  // namespace
+
+std::string GroundTruthInfo::DepthMapPath(const std::string& name) const {
+  return dir + "/depth_maps/" + name + ".bin";
+}
+std::string GroundTruthInfo::NormalMapPath(const std::string& name) const {
+  return dir + "/normal_maps/" + name + ".bin";
+}
+std::string GroundTruthInfo::TexturelessPath(const std::string& name) const {
+  return dir + "/textureless/" + name + ".png";
+}
+std::string GroundTruthInfo::SurfacePath() const { return dir + "/surface.ply"; }
+
+bool FindJsonNumber(const std::string& json, const std::string& key, double* value) {
+  const std::string quoted = "\"" + key + "\"";
+  size_t pos = json.find(quoted);
+  if (pos == std::string::npos) return false;
+  pos = json.find(':', pos + quoted.size());
+  if (pos == std::string::npos) return false;
+  const char* begin = json.c_str() + pos + 1;
+  char* end = nullptr;
+  const double v = std::strtod(begin, &end);
+  if (end == begin) return false;
+  *value = v;
+  return true;
+}
+
+GroundTruthInfo ReadGroundTruthInfo(const std::string& dir) {
+  GroundTruthInfo info;
+  info.dir = dir;
+  std::istringstream names(ReadFile(dir + "/images.txt"));
+  for (std::string line; std::getline(names, line);) {
+    line = Trim(line);
+    if (!line.empty()) info.image_names.push_back(line);
+  }
+  const std::string json_path = dir + "/scene.json";
+  const std::string json = ReadFile(json_path);
+  if (!FindJsonNumber(json, "extent", &info.extent) || !(info.extent > 0.0)) {
+    throw InputError(json_path + ": missing or non-positive \"extent\"");
+  }
+  // Optional keys keep their defaults.
+  FindJsonNumber(json, "cloud_threshold_fraction_1", &info.cloud_threshold_fractions[0]);
+  FindJsonNumber(json, "cloud_threshold_fraction_2", &info.cloud_threshold_fractions[1]);
+  FindJsonNumber(json, "depth_relative_threshold_1", &info.depth_relative_thresholds[0]);
+  FindJsonNumber(json, "depth_relative_threshold_2", &info.depth_relative_thresholds[1]);
+  double min_views = info.min_views_for_completeness;
+  if (FindJsonNumber(json, "min_views_for_completeness", &min_views)) {
+    info.min_views_for_completeness = static_cast<int>(min_views);
+  }
+  return info;
+}
+
+}  // namespace eval
+}  // namespace msp

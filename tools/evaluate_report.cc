@@ -1,0 +1,136 @@
+#include "evaluate_report.h"
+
+#include <cstdio>
+#include <iomanip>
+#include <sstream>
+
+namespace msp {
+namespace eval {
+namespace {
+
+std::string Percent(double v) {
+  char buf[16];
+  std::snprintf(buf, sizeof(buf), "%6.2f", 100.0 * v);
+  return buf;
+}
+
+void PrintRow(std::ostream& out, const std::string& name, const RegionMetrics& m) {
+  char buf[256];
+  std::snprintf(buf, sizeof(buf), "%-16s %7s %7s %7s %7s %7s %9.5f %8.2f\n", name.c_str(),
+                Percent(m.valid_fraction).c_str(), Percent(m.complete[0]).c_str(),
+                Percent(m.complete[1]).c_str(), Percent(m.accurate[0]).c_str(),
+                Percent(m.accurate[1]).c_str(), m.median_rel_error, m.median_normal_error_deg);
+  out << buf;
+}
+
+void PrintMapTable(const EvaluationResult& r, bool textureless, std::ostream& out) {
+  const double* t = r.info.depth_relative_thresholds;
+  out << "\nDepth maps (" << r.input_type << "), "
+      << (textureless ? "textureless pixels only" : "all pixels") << ", thresholds " << 100.0 * t[0]
+      << "% / " << 100.0 * t[1] << "% relative depth error\n";
+  char header[256];
+  std::snprintf(header, sizeof(header), "%-16s %7s %7s %7s %7s %7s %9s %8s\n", "image", "valid%",
+                "cmp1%", "cmp2%", "acc1%", "acc2%", "med_rel", "med_n_deg");
+  out << header;
+  for (const DepthMapMetrics& m : r.maps) {
+    if (m.missing) {
+      out << std::left << std::setw(16) << m.name << " (missing)\n" << std::right;
+      continue;
+    }
+    PrintRow(out, m.name, textureless ? m.textureless : m.all);
+  }
+  PrintRow(out, "average", textureless ? r.average.textureless : r.average.all);
+}
+
+void JsonRegion(std::ostringstream& s, const RegionMetrics& m) {
+  s << "{\"num_gt\": " << m.num_gt << ", \"num_valid\": " << m.num_valid
+    << ", \"valid_fraction\": " << m.valid_fraction << ", \"complete_1\": " << m.complete[0]
+    << ", \"complete_2\": " << m.complete[1] << ", \"accurate_1\": " << m.accurate[0]
+    << ", \"accurate_2\": " << m.accurate[1] << ", \"median_rel_error\": " << m.median_rel_error
+    << ", \"median_normal_error_deg\": " << m.median_normal_error_deg << "}";
+}
+
+void JsonMap(std::ostringstream& s, const DepthMapMetrics& m) {
+  s << "{\"name\": \"" << m.name << "\", \"missing\": " << (m.missing ? "true" : "false")
+    << ", \"width\": " << m.width << ", \"height\": " << m.height << ", \"all\": ";
+  JsonRegion(s, m.all);
+  s << ", \"textureless\": ";
+  JsonRegion(s, m.textureless);
+  s << "}";
+}
+
+}  // namespace
+
+void PrintReport(const EvaluationResult& r, std::ostream& out) {
+  out << "Ground truth: " << r.info.dir << " (" << r.info.image_names.size() << " images, extent "
+      << std::fixed << std::setprecision(3) << r.info.extent << " m)\n"
+      << std::defaultfloat;
+  if (!r.maps.empty()) {
+    out << "cmpK = within threshold K over all ground-truth pixels; accK = over valid "
+           "predictions\n";
+    PrintMapTable(r, false, out);
+    PrintMapTable(r, true, out);
+    if (r.num_missing_maps > 0) out << r.num_missing_maps << " map(s) missing\n";
+  }
+  if (r.has_cloud) {
+    const CloudMetrics& c = r.cloud;
+    out << "\nFused point cloud " << r.fused << ": " << c.num_points << " points; ground truth "
+        << c.num_gt << " samples, " << c.num_gt_multi << " seen by >= " << c.min_views
+        << " views\n";
+    char buf[256];
+    std::snprintf(buf, sizeof(buf), "%-18s %7s %7s %7s %7s %7s\n", "threshold", "acc%", "comp%",
+                  "F1%",
+                  "comp"
+                  "3v%",
+                  "F1_3v%");
+    out << buf;
+    for (const CloudThresholdMetrics& m : c.thresholds) {
+      char label[64];
+      std::snprintf(label, sizeof(label), "%.2f%% = %.4f m", 100.0 * m.fraction, m.metres);
+      std::snprintf(buf, sizeof(buf), "%-18s %7s %7s %7s %7s %7s\n", label,
+                    Percent(m.accuracy).c_str(), Percent(m.completeness).c_str(),
+                    Percent(m.f1).c_str(), Percent(m.completeness_multi).c_str(),
+                    Percent(m.f1_multi).c_str());
+      out << buf;
+    }
+    out << "(3v = completeness over samples seen by >= " << c.min_views
+        << " views, what COLMAP's default fusion can reach)\n";
+  }
+}
+
+std::string ReportJson(const EvaluationResult& r) {
+  std::ostringstream s;
+  s << std::setprecision(8) << "{\n  \"ground_truth\": \"" << r.info.dir << "\",\n"
+    << "  \"extent\": " << r.info.extent << ",\n  \"input_type\": \"" << r.input_type << "\",\n"
+    << "  \"depth_relative_thresholds\": [" << r.info.depth_relative_thresholds[0] << ", "
+    << r.info.depth_relative_thresholds[1] << "],\n  \"num_missing_maps\": " << r.num_missing_maps
+    << ",\n  \"depth_maps\": [\n";
+  for (size_t i = 0; i < r.maps.size(); ++i) {
+    s << "    ";
+    JsonMap(s, r.maps[i]);
+    s << (i + 1 < r.maps.size() ? ",\n" : "\n");
+  }
+  s << "  ],\n  \"average\": ";
+  JsonMap(s, r.average);
+  s << ",\n  \"fused\": ";
+  if (!r.has_cloud) {
+    s << "null\n}\n";
+    return s.str();
+  }
+  const CloudMetrics& c = r.cloud;
+  s << "{\"path\": \"" << r.fused << "\", \"num_points\": " << c.num_points
+    << ", \"num_gt\": " << c.num_gt << ", \"num_gt_multi\": " << c.num_gt_multi
+    << ", \"min_views\": " << c.min_views << ", \"thresholds\": [\n";
+  for (size_t i = 0; i < c.thresholds.size(); ++i) {
+    const CloudThresholdMetrics& m = c.thresholds[i];
+    s << "    {\"fraction\": " << m.fraction << ", \"metres\": " << m.metres
+      << ", \"accuracy\": " << m.accuracy << ", \"completeness\": " << m.completeness
+      << ", \"completeness_multi\": " << m.completeness_multi << ", \"f1\": " << m.f1
+      << ", \"f1_multi\": " << m.f1_multi << "}" << (i + 1 < c.thresholds.size() ? ",\n" : "\n");
+  }
+  s << "  ]}\n}\n";
+  return s.str();
+}
+
+}  // namespace eval
+}  // namespace msp

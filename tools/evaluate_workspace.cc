@@ -1,0 +1,74 @@
+#include "evaluate_workspace.h"
+
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+
+#include "dense_map_io.h"
+#include "errors.h"
+#include "ply_points.h"
+
+namespace msp {
+namespace eval {
+namespace {
+
+std::string MapPath(const std::string& workspace, const char* folder, const std::string& name,
+                    const std::string& type) {
+  return workspace + "/stereo/" + folder + "/" + name + "." + type + ".bin";
+}
+
+DepthMapMetrics EvaluateOne(const EvaluationOptions& options, const GroundTruthInfo& info,
+                            const std::string& name) {
+  DepthMapMetrics m;
+  m.name = name;
+  const std::string depth_path = MapPath(options.workspace, "depth_maps", name, options.input_type);
+  if (!std::filesystem::exists(depth_path)) {
+    m.missing = true;
+    return m;
+  }
+  const DenseMap depth = ReadDenseMap(depth_path);
+  if (depth.channels != 1) throw InputError(depth_path + ": a depth map has 1 channel");
+  const std::string normal_path =
+      MapPath(options.workspace, "normal_maps", name, options.input_type);
+  DenseMap normal;
+  if (std::filesystem::exists(normal_path)) normal = ReadDenseMap(normal_path);
+  const DenseMap gt_depth = ReadDenseMap(info.DepthMapPath(name));
+  const DenseMap gt_normal = ReadDenseMap(info.NormalMapPath(name));
+  const cv::Mat textureless = cv::imread(info.TexturelessPath(name), cv::IMREAD_GRAYSCALE);
+  if (textureless.empty()) throw InputError("cannot read " + info.TexturelessPath(name));
+  m = EvaluateDepthMap(depth, normal, gt_depth, gt_normal, textureless,
+                       info.depth_relative_thresholds);
+  m.name = name;
+  return m;
+}
+
+}  // namespace
+
+EvaluationResult EvaluateWorkspace(const EvaluationOptions& options) {
+  EvaluationResult result;
+  const std::string gt_dir =
+      options.ground_truth.empty() ? options.workspace + "/ground_truth" : options.ground_truth;
+  result.info = ReadGroundTruthInfo(gt_dir);
+  result.input_type = options.input_type;
+  if (options.evaluate_maps) {
+    for (const std::string& name : result.info.image_names) {
+      result.maps.push_back(EvaluateOne(options, result.info, name));
+      result.num_missing_maps += result.maps.back().missing ? 1 : 0;
+    }
+    result.average = AverageMetrics(result.maps);
+  }
+  if (!options.fused.empty()) {
+    const PlyPoints fused = ReadPlyPoints(options.fused);
+    const PlyPoints gt = ReadPlyPoints(result.info.SurfacePath());
+    const std::vector<double> fractions(std::begin(result.info.cloud_threshold_fractions),
+                                        std::end(result.info.cloud_threshold_fractions));
+    result.has_cloud = true;
+    result.fused = options.fused;
+    result.cloud =
+        EvaluateCloud(fused.points, gt.points, gt.num_views, result.info.min_views_for_completeness,
+                      result.info.extent, fractions);
+  }
+  return result;
+}
+
+}  // namespace eval
+}  // namespace msp

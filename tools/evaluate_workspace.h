@@ -1,0 +1,39 @@
+// Evaluates a workspace's depth / normal maps and optionally a fused point
+// cloud against the ground truth written by msp_make_scene.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "evaluate_cloud.h"
+#include "evaluate_depth.h"
+#include "evaluate_ground_truth.h"
+
+namespace msp {
+namespace eval {
+
+struct EvaluationOptions {
+  std::string workspace;
+  std::string ground_truth;              // default <workspace>/ground_truth
+  std::string input_type = "geometric";  // suffix of the maps: geometric | photometric
+  std::string fused;                     // fused.ply to evaluate; empty: none
+  bool evaluate_maps = true;
+};
+
+struct EvaluationResult {
+  GroundTruthInfo info;
+  std::string input_type;
+  std::vector<DepthMapMetrics> maps;  // ground-truth image order
+  DepthMapMetrics average;
+  int num_missing_maps = 0;
+  bool has_cloud = false;
+  std::string fused;
+  CloudMetrics cloud;
+};
+
+// Throws InputError on unreadable ground truth or point clouds. Missing maps
+// are reported (missing = true), not fatal: a method may skip images.
+EvaluationResult EvaluateWorkspace(const EvaluationOptions& options);
+
+}  // namespace eval
+}  // namespace msp

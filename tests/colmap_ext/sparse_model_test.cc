@@ -131,7 +131,9 @@ TEST(SparseModel, TextRoundTripIsExact) {
   const std::string images = test::ReadRaw(dir / "images.txt");
   std::istringstream lines(images);
   for (std::string line; std::getline(lines, line);) {
-    if (!line.empty() && line[0] != '#') EXPECT_EQ(line.find("  "), std::string::npos) << line;
+    if (!line.empty() && line[0] != '#') {
+      EXPECT_EQ(line.find("  "), std::string::npos) << line;
+    }
   }
   EXPECT_NE(images.find(" sub/dir/b.png\n\n"), std::string::npos) << images;
   EXPECT_NE(images.find("3 4 -1\n"), std::string::npos) << images;

@@ -12,7 +12,9 @@ namespace msp {
 // malformed or absurd, or the file size does not match the header.
 DenseMap ReadDenseMap(const std::string& path);
 // Writes to "<path>.tmp-<pid>" and renames, so a reader never sees half a file.
-// Creates missing parent folders. Throws InputError when writing fails.
+// Creates missing parent folders. Throws InputError when writing fails, and
+// std::logic_error for a NaN/Inf value (COLMAP's fusion would fuse NaN depths
+// into garbage points) or a map whose data does not match its size.
 void WriteDenseMap(const std::string& path, const DenseMap& map);
 
 }  // namespace msp

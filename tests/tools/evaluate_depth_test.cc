@@ -1,0 +1,108 @@
+#include "evaluate_depth.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace msp {
+namespace eval {
+namespace {
+
+constexpr double kThresholds[2] = {0.01, 0.05};
+
+// Ground truth: depth 2 + col / 100, normal (0, 0, -1); textureless on the
+// left half.
+struct GroundTruth {
+  DenseMap depth{8, 6, 1};
+  DenseMap normal{8, 6, 3};
+  cv::Mat mask = cv::Mat(6, 8, CV_8UC1, cv::Scalar(0));
+  GroundTruth() {
+    for (int r = 0; r < depth.height; ++r) {
+      for (int c = 0; c < depth.width; ++c) {
+        depth.At(r, c) = 2.0f + 0.01f * c;
+        normal.At(r, c, 2) = -1.0f;
+        if (c < depth.width / 2) mask.at<uint8_t>(r, c) = 255;
+      }
+    }
+  }
+};
+
+TEST(EvaluateDepthMap, GroundTruthAgainstItselfIsPerfect) {
+  const GroundTruth gt;
+  const DepthMapMetrics m =
+      EvaluateDepthMap(gt.depth, gt.normal, gt.depth, gt.normal, gt.mask, kThresholds);
+  EXPECT_EQ(m.all.num_gt, 48);
+  EXPECT_EQ(m.textureless.num_gt, 24);
+  for (const RegionMetrics* r : {&m.all, &m.textureless}) {
+    EXPECT_DOUBLE_EQ(r->valid_fraction, 1.0);
+    EXPECT_DOUBLE_EQ(r->complete[0], 1.0);
+    EXPECT_DOUBLE_EQ(r->accurate[1], 1.0);
+    EXPECT_DOUBLE_EQ(r->median_rel_error, 0.0);
+    EXPECT_DOUBLE_EQ(r->median_normal_error_deg, 0.0);
+  }
+}
+
+TEST(EvaluateDepthMap, ScaledDepthMissesOnePercentButNotFive) {
+  const GroundTruth gt;
+  DenseMap depth = gt.depth;
+  for (float& d : depth.data) d *= 1.03f;
+  DenseMap normal = gt.normal;
+  // Tilt every normal by 30 degrees.
+  for (int r = 0; r < 6; ++r) {
+    for (int c = 0; c < 8; ++c) {
+      normal.At(r, c, 0) = 0.5f;
+      normal.At(r, c, 2) = -std::sqrt(0.75f);
+    }
+  }
+  const DepthMapMetrics m =
+      EvaluateDepthMap(depth, normal, gt.depth, gt.normal, gt.mask, kThresholds);
+  EXPECT_DOUBLE_EQ(m.all.complete[0], 0.0);
+  EXPECT_DOUBLE_EQ(m.all.complete[1], 1.0);
+  EXPECT_NEAR(m.all.median_rel_error, 0.03, 1e-6);
+  EXPECT_NEAR(m.all.median_normal_error_deg, 30.0, 1e-3);
+}
+
+TEST(EvaluateDepthMap, InvalidPixelsCountAgainstCompletenessOnly) {
+  const GroundTruth gt;
+  DenseMap depth = gt.depth;
+  // Invalidate the whole textureless half: zeros and a NaN.
+  for (int r = 0; r < 6; ++r) {
+    for (int c = 0; c < 4; ++c) depth.At(r, c) = 0.0f;
+  }
+  depth.At(0, 0) = std::nanf("");
+  const DepthMapMetrics m =
+      EvaluateDepthMap(depth, DenseMap(), gt.depth, gt.normal, gt.mask, kThresholds);
+  EXPECT_DOUBLE_EQ(m.all.valid_fraction, 0.5);
+  EXPECT_DOUBLE_EQ(m.all.complete[0], 0.5);
+  EXPECT_DOUBLE_EQ(m.all.accurate[0], 1.0);
+  EXPECT_DOUBLE_EQ(m.textureless.valid_fraction, 0.0);
+  EXPECT_DOUBLE_EQ(m.textureless.complete[1], 0.0);
+}
+
+TEST(EvaluateDepthMap, SmallerPredictionSamplesGroundTruthNearest) {
+  const GroundTruth gt;
+  // Half resolution: predicted pixel (r, c) sits at GT pixel (2r, 2c).
+  DenseMap depth(4, 3, 1);
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 4; ++c) depth.At(r, c) = gt.depth.At(2 * r, 2 * c);
+  }
+  const DepthMapMetrics m =
+      EvaluateDepthMap(depth, DenseMap(), gt.depth, gt.normal, gt.mask, kThresholds);
+  EXPECT_EQ(m.width, 4);
+  EXPECT_EQ(m.all.num_gt, 12);
+  EXPECT_DOUBLE_EQ(m.all.median_rel_error, 0.0);
+  EXPECT_EQ(m.textureless.num_gt, 6);
+}
+
+TEST(AverageMetrics, MeansPerImageFigures) {
+  DepthMapMetrics a, b;
+  a.all.complete[0] = 1.0;
+  b.all.complete[0] = 0.5;
+  b.missing = true;
+  const DepthMapMetrics avg = AverageMetrics({a, b});
+  EXPECT_DOUBLE_EQ(avg.all.complete[0], 0.75);
+}
+
+}  // namespace
+}  // namespace eval
+}  // namespace msp

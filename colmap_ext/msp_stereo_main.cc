@@ -45,6 +45,15 @@ void WarnAboutIgnoredOptions(const StereoCommandOptions& options) {
     std::cout << "WARNING: --PatchMatchStereo.sigma_spatial / sigma_color only apply with "
                  "--MspStereo.bilateral_ncc true\n";
   }
+  if (options.patch_match.num_iterations != defaults.num_iterations) {
+    std::cout << "WARNING: --PatchMatchStereo.num_iterations is ignored (the APD schedule runs "
+                 "3 red-black iterations per pass, 4 passes per round)\n";
+  }
+  if (options.patch_match.ncc_sigma != defaults.ncc_sigma ||
+      options.patch_match.incident_angle_sigma != defaults.incident_angle_sigma) {
+    std::cout << "WARNING: --PatchMatchStereo.ncc_sigma / incident_angle_sigma are ignored "
+                 "(view selection follows ACMM, not COLMAP's likelihood model)\n";
+  }
   if (options.msp.backend == "cpu" && options.patch_match.gpu_index != "-1") {
     std::cout << "WARNING: --PatchMatchStereo.gpu_index is ignored by the cpu back-end "
                  "(use --MspStereo.backend cuda)\n";

@@ -1,11 +1,11 @@
 #!/bin/sh
 # The command-line flow of the bundled scene: msp_make_scene -> msp_write_gt_maps
 # -> colmap stereo_fusion -> msp_evaluate --json, on a small scene.
-# Usage: cli_smoke_test.sh <bin_dir> <colmap>   (exit 77 = skipped: no colmap)
+# Usage: cli_smoke_test.sh <bin_dir> <colmap>
 set -eu
 bin_dir=$1
 colmap=$2
-[ -x "$colmap" ] || { echo "no colmap at $colmap: skipped"; exit 77; }
+[ -x "$colmap" ] || { echo "colmap is not installed at $colmap" >&2; exit 1; }
 ws=$(mktemp -d "${TMPDIR:-/tmp}/msp_cli_smoke.XXXXXX")
 trap 'rm -rf "$ws"' EXIT
 

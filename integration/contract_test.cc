@@ -67,7 +67,7 @@ class ContractTest : public testing::Test {
     scene::GenerateScene(options);
   }
   void SetUp() override {
-    if (!fs::exists(ColmapExecutable())) GTEST_SKIP() << "no colmap at " << ColmapExecutable();
+    ASSERT_TRUE(fs::exists(ColmapExecutable())) << "colmap is not installed at " << ColmapExecutable();
   }
   static std::string workspace_;
 };

@@ -1,0 +1,116 @@
+// The README's main job on a small version of the bundled scene, through the
+// installed-style commands: `colmap msp_stereo` (our dispatcher, handing
+// stereo_fusion to the real COLMAP), `colmap stereo_fusion`, then the
+// evaluator against the exact ground truth. A second run must resume: every
+// image already has its outputs, so nothing is recomputed or rewritten.
+//
+// Figures measured when the tolerances were set (320x240, 6 views, seed 1,
+// conventional core of the CPU back-end): see BENCHMARKS.md.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "dense_map_io.h"
+#include "evaluate_workspace.h"
+#include "generate.h"
+
+namespace msp {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Tolerances, a little below what was measured, so a regression fails.
+constexpr double kMinMapAccuracy5 = 0.55;      // valid pixels within 5 % depth
+constexpr double kMinFusedAccuracyCoarse = 0.80;  // fused points within 2 % of the extent
+constexpr double kMinF1MultiCoarse = 0.45;        // F1 over >= 3-view surface at 2 %
+constexpr int kNumViews = 6;
+
+std::string RealColmap() {
+  const char* env = std::getenv("MSP_REAL_COLMAP");
+  return env != nullptr ? env : "/usr/bin/colmap";
+}
+
+int RunLogged(const std::string& command, const std::string& log) {
+  const std::string full = "REAL_COLMAP=" + RealColmap() + " " + command + " > " + log + " 2>&1";
+  return std::system(full.c_str());
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+class EndToEndTest : public testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    ws_ = testing::TempDir() + "/msp_end_to_end_ws";
+    fs::remove_all(ws_);
+    scene::GeneratorOptions options;
+    options.output = ws_;
+    options.seed = 1;
+    options.rig.width = 320;
+    options.rig.height = 240;
+    options.rig.num_cameras = kNumViews;
+    scene::GenerateScene(options);
+  }
+  static std::string ws_;
+};
+std::string EndToEndTest::ws_;
+
+const std::string kColmap = std::string(MSP_BIN_DIR) + "/colmap";
+
+TEST_F(EndToEndTest, StereoFusionEvaluateThenResume) {
+  ASSERT_TRUE(fs::exists(RealColmap())) << "colmap is not installed at " << RealColmap();
+  ASSERT_EQ(RunLogged(kColmap + " msp_stereo --workspace_path " + ws_ + " --MspStereo.seed 1",
+                ws_ + "/stereo.log"),
+            0)
+      << ReadFile(ws_ + "/stereo.log");
+  for (int i = 0; i < kNumViews; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof(name), "img_%03d.png", i);
+    for (const char* type : {"photometric", "geometric"}) {
+      const DenseMap depth =
+          ReadDenseMap(ws_ + "/stereo/depth_maps/" + name + "." + type + ".bin");
+      const DenseMap normal =
+          ReadDenseMap(ws_ + "/stereo/normal_maps/" + name + "." + type + ".bin");
+      ASSERT_EQ(depth.width, 320);
+      ASSERT_EQ(normal.channels, 3);
+      for (float v : depth.data) ASSERT_TRUE(std::isfinite(v) && v >= 0.0f);
+      for (float v : normal.data) ASSERT_TRUE(std::isfinite(v));
+    }
+  }
+  const std::string fused = ws_ + "/fused.ply";
+  ASSERT_EQ(RunLogged(kColmap + " stereo_fusion --workspace_path " + ws_ +
+                    " --input_type geometric --output_path " + fused,
+                ws_ + "/fusion.log"),
+            0)
+      << ReadFile(ws_ + "/fusion.log");
+
+  eval::EvaluationOptions options;
+  options.workspace = ws_;
+  options.fused = fused;
+  const eval::EvaluationResult r = eval::EvaluateWorkspace(options);
+  EXPECT_EQ(r.num_missing_maps, 0);
+  const eval::CloudThresholdMetrics& coarse = r.cloud.thresholds[1];
+  RecordProperty("map_accuracy5_permille", static_cast<int>(1000 * r.average.all.accurate[1]));
+  RecordProperty("fused_accuracy_coarse_permille", static_cast<int>(1000 * coarse.accuracy));
+  RecordProperty("f1_multi_coarse_permille", static_cast<int>(1000 * coarse.f1_multi));
+  EXPECT_GE(r.average.all.accurate[1], kMinMapAccuracy5);
+  EXPECT_GE(coarse.accuracy, kMinFusedAccuracyCoarse);
+  EXPECT_GE(coarse.f1_multi, kMinF1MultiCoarse);
+
+  // Resume: a second run finds every output and leaves the files as they are.
+  const std::string before = ReadFile(ws_ + "/stereo/depth_maps/img_000.png.geometric.bin");
+  ASSERT_EQ(RunLogged(kColmap + " msp_stereo --workspace_path " + ws_, ws_ + "/stereo2.log"), 0);
+  EXPECT_NE(ReadFile(ws_ + "/stereo2.log").find("nothing to do"), std::string::npos)
+      << ReadFile(ws_ + "/stereo2.log");
+  EXPECT_EQ(ReadFile(ws_ + "/stereo/depth_maps/img_000.png.geometric.bin"), before);
+}
+
+}  // namespace
+}  // namespace msp

@@ -5,7 +5,8 @@
 // image already has its outputs, so nothing is recomputed or rewritten.
 //
 // Figures measured when the tolerances were set (320x240, 6 views, seed 1,
-// conventional core of the CPU back-end): see BENCHMARKS.md.
+// conventional core of the CPU back-end): valid pixels within 5 % depth 60.9 %,
+// fused accuracy at 2 % of the extent 96.9 %, F1 over >= 3-view surface 48.6 %.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,8 +27,8 @@ namespace fs = std::filesystem;
 
 // Tolerances, a little below what was measured, so a regression fails.
 constexpr double kMinMapAccuracy5 = 0.55;      // valid pixels within 5 % depth
-constexpr double kMinFusedAccuracyCoarse = 0.80;  // fused points within 2 % of the extent
-constexpr double kMinF1MultiCoarse = 0.45;        // F1 over >= 3-view surface at 2 %
+constexpr double kMinFusedAccuracyCoarse = 0.90;  // fused points within 2 % of the extent
+constexpr double kMinF1MultiCoarse = 0.44;        // F1 over >= 3-view surface at 2 %
 constexpr int kNumViews = 6;
 
 std::string RealColmap() {

@@ -8,6 +8,7 @@ PACKAGES=(
   libeigen3-dev libopencv-dev libboost-program-options-dev  # libraries
   libgtest-dev libgmock-dev                      # tests
   colmap                                         # stereo_fusion for demos and tests (no CUDA needed)
+  python3-numpy python3-opencv                   # bench/ply_stats.py
 )
 
 missing=()

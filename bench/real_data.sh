@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Runs the whole workflow on a ready COLMAP dense workspace (e.g. one of
+# ../shared/data/*) and prints time, peak memory and fused-cloud figures.
+#
+#   bench/real_data.sh <dataset dir> <output dir> [--bbox x0 y0 z0 x1 y1 z1] [msp_stereo options...]
+#
+# The dataset is not modified: images are symlinked, sparse/ and the cfg files
+# copied into <output dir>, which is recreated.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+src=$(cd "$1" && pwd); out=$2; shift 2
+bbox=()
+if [ "${1:-}" = "--bbox" ]; then bbox=(--bbox "$2" "$3" "$4" "$5" "$6" "$7"); shift 7; fi
+rm -rf "$out"; mkdir -p "$out/stereo"
+ln -s "$src/images" "$out/images"
+cp -r "$src/sparse" "$out/"
+cp "$src/stereo/patch-match.cfg" "$src/stereo/fusion.cfg" "$out/stereo/"
+/usr/bin/time -v "$root/build/bin/msp_stereo" --workspace_path "$out" "$@" \
+  > "$out/stereo.log" 2> "$out/time.log"
+colmap stereo_fusion --workspace_path "$out" --input_type geometric \
+  --output_path "$out/fused.ply" > "$out/fusion.log" 2>&1
+echo "dataset: $src"
+grep -E "Elapsed \(wall|Maximum resident" "$out/time.log"
+/usr/bin/python3 "$root/bench/ply_stats.py" "$out/fused.ply" "${bbox[@]}" --render "$out/fused.png"

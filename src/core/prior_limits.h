@@ -1,0 +1,23 @@
+// Capacities of the segmentation prior (paper "Multi-granularity Segmentation
+// Prior"), defined once: option checks, the mask reader and the per-pixel
+// arrays all use these.
+#pragma once
+
+#include <cstdint>
+
+namespace msp {
+namespace core {
+
+// Label layers per image. A pixel's set of best layers (eq. 4, ties kept) is a
+// uint32_t bit set, so this many layers fit; the paper uses 3.
+constexpr int kMaxLabelLayers = 32;
+// Anchors of one unreliable pixel seen by the prior: 8 sectors x 4 anchors of
+// the disassemble-clustering step; a pixel's anchor subset S_n is a uint32_t
+// bit set over them.
+constexpr int kMaxPriorAnchors = 32;
+
+static_assert(kMaxLabelLayers <= 32, "best-layer sets are uint32_t bit sets");
+static_assert(kMaxPriorAnchors <= 32, "anchor subsets are uint32_t bit sets");
+
+}  // namespace core
+}  // namespace msp

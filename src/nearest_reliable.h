@@ -1,0 +1,18 @@
+// Nearest reliable pixel of every pixel (algorithm.md 2.2): an unreliable ray
+// hit of the anchor search snaps to it. An exact Euclidean feature transform
+// (Felzenszwalb & Huttenlocher's lower envelope of parabolas, a column pass
+// then a row pass), linear in the number of pixels, instead of a 201x201 scan.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace msp {
+
+// For each pixel, the index (row * width + col) of a reliable pixel
+// (classes[i] == core::kReliable) at the smallest Euclidean distance, or -1
+// when the image has none. Ties go to any of the nearest ones.
+std::vector<int> NearestReliablePixels(const uint8_t* classes, int width, int height,
+                                       int num_threads);
+
+}  // namespace msp

@@ -1,0 +1,195 @@
+#include "core/anchors.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "nearest_reliable.h"
+#include "test_cameras.h"
+
+namespace msp {
+namespace core {
+namespace {
+
+constexpr int kSize = 120;
+constexpr int kCol = 60, kRow = 60;  // the unreliable pixel p
+constexpr float kDepthRange = 10.0f;
+constexpr int kMaxDistance = 100;
+constexpr float kPi = 3.14159265f;
+
+// A reference camera and the slanted plane every reliable pixel lies on.
+struct Layout {
+  Camera cam = testing_cameras::MakeCamera(kSize, kSize, 100.0f, Mat3{{1, 0, 0, 0, 1, 0, 0, 0, 1}},
+                                           Vec3{0, 0, 0});
+  Vec3 normal = Normalized(Vec3{0.2f, -0.1f, -1.0f});
+  float dist = 5.0f;
+  std::vector<uint8_t> classes = std::vector<uint8_t>(kSize * kSize, kUnreliable);
+  std::vector<float> depth = std::vector<float>(kSize * kSize, 0.0f);
+  std::vector<int> nearest;
+
+  float TrueDepth(float c, float r) const { return DepthOnPlane(cam, normal, dist, c, r); }
+
+  // Pixels where `reliable(dx, dy, angle_degrees)` holds become reliable on the plane.
+  void Fill(const std::function<bool(int, int, float)>& reliable) {
+    for (int r = 0; r < kSize; ++r) {
+      for (int c = 0; c < kSize; ++c) {
+        const int dx = c - kCol, dy = r - kRow;
+        const float angle =
+            std::atan2(static_cast<float>(dy), static_cast<float>(dx)) * 180.0f / kPi;
+        if (!(dx == 0 && dy == 0) && reliable(dx, dy, angle)) {
+          classes[r * kSize + c] = kReliable;
+          depth[r * kSize + c] = TrueDepth(c, r);
+        }
+      }
+    }
+    nearest = NearestReliablePixels(classes.data(), kSize, kSize, 1);
+  }
+
+  AnchorMaps Maps() const {
+    return AnchorMaps{classes.data(), nearest.data(), depth.data(), kSize, kSize};
+  }
+
+  bool Find(int round, AnchorSet* out, uint64_t key = 7) const {
+    Rng rng = MakeRng(key);
+    return FindAnchors(cam, Maps(), kCol, kRow,
+                       DefaultAnchorParams(round, kDepthRange, kMaxDistance), &rng, out);
+  }
+};
+
+// Reliable outside a disk of radius 20 around p: a textureless blob.
+bool OutsideDisk(int dx, int dy, float) { return dx * dx + dy * dy > 20 * 20; }
+
+TEST(Anchors, ScheduleOfRaysAndThresholds) {
+  EXPECT_EQ(RaysPerSector(0), 2);
+  EXPECT_EQ(RaysPerSector(1), 4);
+  EXPECT_EQ(RaysPerSector(5), kMaxRaysPerSector);
+  EXPECT_FLOAT_EQ(AnchorInlierThreshold(0, 10.0f), 0.1f);
+  EXPECT_FLOAT_EQ(AnchorInlierThreshold(2, 10.0f), 0.075f);
+  EXPECT_GT(AnchorInlierThreshold(20, 10.0f), 0.0f);
+  int radius = kFirstRayRadius;
+  const int expected[] = {2, 4, 8, 16, 32, 57, 82};
+  for (int e : expected) {
+    EXPECT_EQ(radius, e);
+    radius = NextRayRadius(radius);
+  }
+}
+
+TEST(Anchors, TriangleContainment) {
+  EXPECT_TRUE(TriangleContains(0, 0, 10, 0, 0, 10, 2, 2));
+  EXPECT_TRUE(TriangleContains(0, 0, 0, 10, 10, 0, 2, 2));  // either winding
+  EXPECT_TRUE(TriangleContains(0, 0, 10, 0, 0, 10, 5, 5));  // on an edge
+  EXPECT_FALSE(TriangleContains(0, 0, 10, 0, 0, 10, 6, 6));
+  EXPECT_FALSE(TriangleContains(0, 0, 10, 0, 0, 10, -1, 2));
+}
+
+TEST(Anchors, EverySectorHitsAndThePlaneIsRecovered) {
+  for (int round = 0; round < 2; ++round) {
+    Layout layout;
+    layout.Fill(OutsideDisk);
+    AnchorSet a;
+    ASSERT_TRUE(layout.Find(round, &a));
+    EXPECT_EQ(a.num_sectors, kNumSectors);
+    EXPECT_EQ(a.count, kMaxAnchors);
+    EXPECT_EQ(a.num_inliers, kNumSectors * RaysPerSector(round));
+    const PlaneHypothesis h = AnchorPlaneHypothesis(layout.cam, a, kCol, kRow);
+    EXPECT_NEAR(h.depth, layout.TrueDepth(kCol, kRow), 1e-3f);
+    EXPECT_GT(Dot(h.normal, layout.normal), 0.9999f);
+    for (int k = 0; k < a.count; ++k) {
+      EXPECT_EQ(layout.classes[a.rows[k] * kSize + a.cols[k]], kReliable);
+      const int dx = a.cols[k] - kCol, dy = a.rows[k] - kRow;
+      EXPECT_GT(dx * dx + dy * dy, 20 * 20);
+      EXPECT_LE(dx * dx + dy * dy, kMaxDistance * kMaxDistance);
+    }
+  }
+}
+
+TEST(Anchors, UnreliableHitsSnapInsideTheirSector) {
+  // Reliable pixels only on a ring: every ray position at radius 32 is off the
+  // ring (29..31 px) except by snapping.
+  Layout layout;
+  layout.Fill([](int dx, int dy, float) {
+    const int d2 = dx * dx + dy * dy;
+    return d2 >= 29 * 29 && d2 <= 31 * 31;
+  });
+  AnchorSet a;
+  ASSERT_TRUE(layout.Find(0, &a));
+  EXPECT_EQ(a.num_sectors, kNumSectors);
+  for (int k = 0; k < a.count; ++k) {
+    EXPECT_EQ(layout.classes[a.rows[k] * kSize + a.cols[k]], kReliable);
+  }
+}
+
+TEST(Anchors, RansacRejectsHitsOnAnotherSurface) {
+  Layout layout;
+  layout.Fill(OutsideDisk);
+  // Two sectors see a surface 30% deeper: those hits are outliers.
+  auto outlier = [](float angle) {
+    return std::fabs(angle - 90.0f) < 30.0f || std::fabs(angle + 135.0f) < 30.0f;
+  };
+  for (int r = 0; r < kSize; ++r) {
+    for (int c = 0; c < kSize; ++c) {
+      const float angle =
+          std::atan2(static_cast<float>(r - kRow), static_cast<float>(c - kCol)) * 180.0f / kPi;
+      if (layout.depth[r * kSize + c] > 0.0f && outlier(angle)) layout.depth[r * kSize + c] *= 1.3f;
+    }
+  }
+  AnchorSet a;
+  ASSERT_TRUE(layout.Find(0, &a));
+  EXPECT_EQ(a.num_sectors, kNumSectors);
+  EXPECT_EQ(a.count, kMaxAnchors);
+  // At most the 2 rays of each of the 6 clean sectors (snapping near the wedge
+  // edges may move a few hits onto the deeper surface).
+  EXPECT_GE(a.num_inliers, kDefaultMinInliers);
+  EXPECT_LE(a.num_inliers, 2 * (kNumSectors - 2));
+  EXPECT_NEAR(AnchorPlaneHypothesis(layout.cam, a, kCol, kRow).depth, layout.TrueDepth(kCol, kRow),
+              1e-3f);
+  for (int k = 0; k < a.count; ++k) {
+    const float angle =
+        std::atan2(static_cast<float>(a.rows[k] - kRow), static_cast<float>(a.cols[k] - kCol)) *
+        180.0f / kPi;
+    EXPECT_FALSE(outlier(angle)) << "anchor " << a.cols[k] << "," << a.rows[k];
+  }
+}
+
+TEST(Anchors, TooFewSectorsIsUnknown) {
+  Layout layout;
+  layout.Fill([](int dx, int, float) { return dx < -30; });  // a reliable strip on the left
+  AnchorSet a;
+  EXPECT_FALSE(layout.Find(0, &a));
+  EXPECT_LT(a.num_sectors, kDefaultMinSectors);
+  EXPECT_EQ(a.count, 0);
+}
+
+TEST(Anchors, TrianglesMustContainThePixel) {
+  // Reliable pixels only within a 170-degree wedge: four sectors hit, but no
+  // triangle of hits contains p, so no plane is accepted.
+  Layout layout;
+  layout.Fill([](int dx, int dy, float angle) {
+    return dx * dx + dy * dy > 100 && angle >= -20.0f && angle <= 150.0f;
+  });
+  AnchorSet a;
+  EXPECT_FALSE(layout.Find(0, &a));
+  EXPECT_EQ(a.num_sectors, 4);
+  EXPECT_EQ(a.num_inliers, 0);
+  EXPECT_EQ(a.count, 0);
+}
+
+TEST(Anchors, SameKeySameAnchors) {
+  Layout layout;
+  layout.Fill(OutsideDisk);
+  AnchorSet a, b;
+  ASSERT_TRUE(layout.Find(1, &a, 42));
+  ASSERT_TRUE(layout.Find(1, &b, 42));
+  ASSERT_EQ(a.count, b.count);
+  for (int k = 0; k < a.count; ++k) {
+    EXPECT_EQ(a.cols[k], b.cols[k]);
+    EXPECT_EQ(a.rows[k], b.rows[k]);
+  }
+}
+
+}  // namespace
+}  // namespace core
+}  // namespace msp

@@ -1,0 +1,120 @@
+#include "core/deformable_cost.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "plane_scene.h"
+
+namespace msp {
+namespace core {
+namespace {
+
+constexpr int kCol = 100, kRow = 75;
+const Vec3 kFrontoParallel{0.0f, 0.0f, -1.0f};
+
+AnchorSet AnchorsAt(const int (*offsets)[2], int count, int col, int row) {
+  AnchorSet a{};
+  a.count = count;
+  for (int k = 0; k < count; ++k) {
+    a.cols[k] = col + offsets[k][0];
+    a.rows[k] = row + offsets[k][1];
+  }
+  return a;
+}
+
+// Anchor windows equal to the centre window.
+DeformableParams SameWindow(const PassParams& p) {
+  DeformableParams d = DefaultDeformableParams();
+  d.anchor_window_radius = p.ncc.window_radius;
+  d.anchor_window_step = p.ncc.window_step;
+  return d;
+}
+
+TEST(DeformableCost, AnchorsAtTheCentreGiveTheConventionalCost) {
+  testing_scene::PlaneScene s;
+  testing_scene::MakeScene(4.0f, true, &s);
+  const int zero[kMaxAnchors][2] = {};
+  const AnchorSet a = AnchorsAt(zero, kMaxAnchors, kCol, kRow);
+  for (float depth : {4.0f, 4.1f, 3.5f}) {  // a good and two wrong hypotheses
+    const PlaneHypothesis h{depth, kFrontoParallel};
+    EXPECT_FLOAT_EQ(DeformableViewCost(s.params, 0, kCol, kRow, h, a, SameWindow(s.params)),
+                    ViewCost(s.params, 0, kCol, kRow, h));
+  }
+}
+
+TEST(DeformableCost, NoAnchorsIsExactlyTheConventionalCost) {
+  testing_scene::PlaneScene s;
+  testing_scene::MakeScene(4.0f, true, &s);
+  AnchorSet none{};
+  const PlaneHypothesis h{4.2f, kFrontoParallel};
+  EXPECT_EQ(DeformableViewCost(s.params, 0, kCol, kRow, h, none, DefaultDeformableParams()),
+            ViewCost(s.params, 0, kCol, kRow, h));
+}
+
+TEST(DeformableCost, GeometricTermAsInTheConventionalCost) {
+  testing_scene::PlaneScene s;
+  testing_scene::MakeScene(4.0f, true, &s);
+  // A source depth map without depth: the geometric term is its maximum.
+  const std::vector<float> empty(s.src.width * s.src.height, 0.0f);
+  s.params.src[0].depth = ImageView{empty.data(), s.src.width, s.src.height, s.src.width};
+  s.params.geometric = 1;
+  const int zero[kMaxAnchors][2] = {};
+  const AnchorSet a = AnchorsAt(zero, kMaxAnchors, kCol, kRow);
+  const PlaneHypothesis h{4.0f, kFrontoParallel};
+  const float conventional = ViewCost(s.params, 0, kCol, kRow, h);
+  EXPECT_FLOAT_EQ(DeformableViewCost(s.params, 0, kCol, kRow, h, a, SameWindow(s.params)),
+                  conventional);
+  s.params.geometric = 0;
+  EXPECT_NEAR(conventional - ViewCost(s.params, 0, kCol, kRow, h),
+              s.params.geom_lambda * s.params.geom_max_error, 1e-5f);
+}
+
+TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
+  testing_scene::PlaneScene s;
+  testing_scene::MakeScene(4.0f, true, &s);
+  const int ring[kMaxAnchors][2] = {{20, 0},  {14, 14},   {0, 20},  {-14, 14},
+                                    {-20, 0}, {-14, -14}, {0, -20}, {14, -14}};
+  const AnchorSet a = AnchorsAt(ring, kMaxAnchors, kCol, kRow);
+  const DeformableParams d = DefaultDeformableParams();
+  const PlaneHypothesis truth{4.0f, kFrontoParallel};
+  const PlaneHypothesis wrong{4.4f, kFrontoParallel};
+  EXPECT_LT(DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d), 0.05f);
+  EXPECT_GT(DeformableViewCost(s.params, 0, kCol, kRow, wrong, a, d), 0.5f);
+  // All views at once, weights skip a view.
+  float costs[kMaxSourceViews];
+  const float weights[1] = {1.0f};
+  DeformableViewCosts(s.params, kCol, kRow, truth, a, d, weights, costs);
+  EXPECT_EQ(costs[0], DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d));
+  const float skip[1] = {0.0f};
+  DeformableViewCosts(s.params, kCol, kRow, truth, a, d, skip, costs);
+  EXPECT_EQ(costs[0], kMaxCost);
+}
+
+TEST(DeformableCost, TexturedAnchorsRescueATexturelessCentre) {
+  // The reference is flat inside a disk of radius 12 around p: the centre
+  // window alone has no signal (cost 2), the anchors outside still match.
+  testing_scene::PlaneScene s;
+  testing_scene::MakeScene(4.0f, true, &s);
+  for (int r = kRow - 12; r <= kRow + 12; ++r) {
+    for (int c = kCol - 12; c <= kCol + 12; ++c) {
+      if ((c - kCol) * (c - kCol) + (r - kRow) * (r - kRow) <= 144) {
+        s.ref_image[r * s.ref.width + c] = 0.5f;
+      }
+    }
+  }
+  const int ring[kMaxAnchors][2] = {{20, 0},  {14, 14},   {0, 20},  {-14, 14},
+                                    {-20, 0}, {-14, -14}, {0, -20}, {14, -14}};
+  const AnchorSet a = AnchorsAt(ring, kMaxAnchors, kCol, kRow);
+  const PlaneHypothesis truth{4.0f, kFrontoParallel};
+  const PlaneHypothesis wrong{4.4f, kFrontoParallel};
+  EXPECT_EQ(ViewCost(s.params, 0, kCol, kRow, truth), kMaxCost);
+  const DeformableParams d = DefaultDeformableParams();
+  const float good = DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d);
+  EXPECT_NEAR(good, d.lambda * kMaxCost, 0.05f);  // only the centre term is lost
+  EXPECT_GT(DeformableViewCost(s.params, 0, kCol, kRow, wrong, a, d), good + 0.3f);
+}
+
+}  // namespace
+}  // namespace core
+}  // namespace msp

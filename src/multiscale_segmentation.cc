@@ -23,9 +23,12 @@ constexpr float kSceneK = 1500.0f;
 constexpr float kFeatureK = 150.0f;
 constexpr double kSceneMinSizeFraction = 1.0 / 500.0;
 constexpr double kFeatureMinSizeFraction = 1.0 / 10000.0;
-// Image area at which k holds as given (640 x 480); k scales with the area
-// because tau = k / |C| is measured in pixels.
+// Image area at which k holds as given (640 x 480). k grows with larger
+// areas because tau = k / |C| is measured in pixels; it does not shrink for
+// smaller images, where sensor noise, not region size, would then decide.
 constexpr double kReferenceArea = 640.0 * 480.0;
+// No level keeps regions smaller than a 3x3 block: they are noise at any scale.
+constexpr int kMinRegionFloor = 9;
 
 // The 8-connected grid as four edge directions per pixel (right, down,
 // down-right, up-right); an edge is packed as pixel << 2 | direction.
@@ -187,12 +190,12 @@ std::vector<int32_t> SegmentSortedEdges(const std::vector<uint64_t>& edges, int 
 GraphSegmentationScale SegmentationScale(int level, int num_levels, int width, int height) {
   const double fraction = num_levels > 1 ? static_cast<double>(level) / (num_levels - 1) : 0.0;
   const double area = static_cast<double>(width) * height;
+  const double area_factor = std::max(1.0, area / kReferenceArea);
   GraphSegmentationScale scale;
-  scale.k =
-      static_cast<float>(kSceneK * std::pow(kFeatureK / kSceneK, fraction) * area / kReferenceArea);
+  scale.k = static_cast<float>(kSceneK * std::pow(kFeatureK / kSceneK, fraction) * area_factor);
   const double min_fraction =
       kSceneMinSizeFraction * std::pow(kFeatureMinSizeFraction / kSceneMinSizeFraction, fraction);
-  scale.min_size = std::max(1, static_cast<int>(std::lround(min_fraction * area)));
+  scale.min_size = std::max(kMinRegionFloor, static_cast<int>(std::lround(min_fraction * area)));
   return scale;
 }
 

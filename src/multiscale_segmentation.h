@@ -23,8 +23,8 @@ struct GraphSegmentationScale {
 
 // The scale of level `level` of `num_levels` (0 = coarsest) for a
 // width x height image: k and min_size interpolate geometrically between the
-// scene-level and the feature-level setting, and grow with the image area so
-// a level has the same granularity at every resolution.
+// scene-level and the feature-level setting, and grow with the image area
+// above 640 x 480 so a level has the same granularity at every larger size.
 GraphSegmentationScale SegmentationScale(int level, int num_levels, int width, int height);
 
 // Felzenszwalb-Huttenlocher segmentation of an RGB DenseMap (3 planar

@@ -3,6 +3,8 @@
 #include <sstream>
 #include <string>
 
+#include "core/anchors.h"
+
 namespace msp {
 namespace {
 
@@ -85,9 +87,14 @@ void CheckMspStereoOptions(const MspStereoOptions& o) {
     Fail("MspStereo.backend", "`" + o.backend + "`", "one of {cpu, cuda}");
   }
   CheckNonNegative("MspStereo.seed", o.seed);
-  CheckRange("MspStereo.coarsest_image_size", o.coarsest_image_size, kMinCoarsestImageSize,
-             1 << 20, false, false, " (smaller images have too few pixels to match)");
+  CheckRange("MspStereo.coarsest_image_size", o.coarsest_image_size, kMinCoarsestImageSize, 1 << 20,
+             false, false, " (smaller images have too few pixels to match)");
   CheckRange("MspStereo.window_step", o.window_step, 1, 2);
+  CheckRange("MspStereo.reliable_max_cost", o.reliable_max_cost, 0.0, 2.0);
+  CheckRange("MspStereo.reliable_single_cost", o.reliable_single_cost, 0.0, 2.0);
+  CheckRange("MspStereo.reliable_min_spread", o.reliable_min_spread, 0.0, 2.0);
+  CheckRange("MspStereo.anchor_max_distance", o.anchor_max_distance, core::kFirstRayRadius, 1 << 16,
+             false, false, " (the first ray sample lies 2 px from the pixel)");
 }
 
 void CheckStereoCommandOptions(const StereoCommandOptions& o) {

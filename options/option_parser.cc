@@ -173,6 +173,17 @@ void DefineOptions(StereoCommandOptions* o, CompatibilityOptions* c, OptionTable
   t->Add(ms + "bilateral_ncc", &m.bilateral_ncc,
          "Weight the NCC window bilaterally (COLMAP's sigma_spatial / sigma_color) instead of "
          "uniformly (APD-MVS).");
+  t->Add(ms + "deformable", &m.deformable,
+         "Deformable patch matching (APD-MVS): unreliable pixels match over reliable anchors; "
+         "false = the conventional PatchMatch core alone.");
+  t->Add(ms + "reliable_max_cost", &m.reliable_max_cost,
+         "[0, 2]. A pixel whose lowest disparity-curve minimum costs more is unreliable.");
+  t->Add(ms + "reliable_single_cost", &m.reliable_single_cost,
+         "[0, 2]. A single curve minimum makes the pixel reliable at or below this cost.");
+  t->Add(ms + "reliable_min_spread", &m.reliable_min_spread,
+         "[0, 2]. With several curve minima, the others must lie this far above the lowest.");
+  t->Add(ms + "anchor_max_distance", &m.anchor_max_distance,
+         "Anchor search range in pixels of the current round (>= 2).");
 }
 
 bool IsHelpFlag(const std::string& arg) { return arg == "-h" || arg == "--help"; }

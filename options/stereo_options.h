@@ -72,6 +72,20 @@ struct MspStereoOptions {
   // COLMAP's bilateral NCC weights (sigma_spatial, sigma_color) instead of the
   // uniform weights of APD-MVS.
   bool bilateral_ncc = false;
+  // Deformable patch matching of the APD-MVS baseline (algorithm.md 2): after
+  // each pass pixels are classified reliable / unreliable from their disparity
+  // cost curve, and unreliable pixels match with a patch deformed over reliable
+  // anchors. false = the conventional PatchMatch core alone.
+  bool deformable = true;
+  // Reliability thresholds on the lowest minimum of the cost curve (1 - NCC):
+  // above reliable_max_cost it is unreliable; a single minimum is reliable at
+  // or below reliable_single_cost; with several, every other minimum must lie
+  // more than reliable_min_spread above it (APD: 0.5, 0.15, 0.2).
+  double reliable_max_cost = 0.5;
+  double reliable_single_cost = 0.15;
+  double reliable_min_spread = 0.2;
+  // Anchor search range in pixels of the current round (APD: 100).
+  int anchor_max_distance = 100;
 };
 
 // Everything the msp_stereo command needs.

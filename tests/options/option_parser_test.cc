@@ -40,9 +40,18 @@ const std::vector<std::string> kColmapPatchMatchFields = {
     "allow_missing_files",
     "write_consistency_graph",
 };
-const std::vector<std::string> kMspFields = {
-    "backend",     "seed",         "num_threads", "mask_path", "coarsest_image_size",
-    "window_step", "bilateral_ncc"};
+const std::vector<std::string> kMspFields = {"backend",
+                                             "seed",
+                                             "num_threads",
+                                             "mask_path",
+                                             "coarsest_image_size",
+                                             "window_step",
+                                             "bilateral_ncc",
+                                             "deformable",
+                                             "reliable_max_cost",
+                                             "reliable_single_cost",
+                                             "reliable_min_spread",
+                                             "anchor_max_distance"};
 const std::vector<std::string> kTopLevel = {
     "workspace_path", "workspace_format", "pmvs_option_name", "config_path",
     "project_path",   "random_seed",      "log_to_stderr",    "log_level"};

@@ -1,0 +1,119 @@
+// One red-black update of an unreliable pixel with deformable patch matching
+// (APD-MVS baseline, algorithm.md 2.2): candidates are the anchors' planes
+// continued to the pixel plus the anchors' RANSAC plane, views are selected
+// and candidates compared with the deformable cost (paper eq. 3), then the
+// usual refinement. The stored cost is the conventional one, so that the
+// neighbours' propagation keeps comparing like with like.
+#pragma once
+
+#include <cstdint>
+
+#include "core/anchors.h"
+#include "core/deformable_cost.h"
+#include "core/deformable_limits.h"
+#include "core/hd.h"
+#include "core/patch_match_kernel.h"
+
+namespace msp {
+namespace core {
+
+// Read-only planes of the whole image as they were when the iteration's
+// anchors were found: anchors may have the pixel's colour, so reading them
+// from the live state would race with their own update.
+struct PlaneMapView {
+  const float* depth;
+  const float* normal;  // 3 planes (nx, ny, nz) of width * height
+  int width;
+  int height;
+  MSP_HD PlaneHypothesis Get(int i) const {
+    const int n = width * height;
+    return PlaneHypothesis{depth[i], Vec3{normal[i], normal[n + i], normal[2 * n + i]}};
+  }
+};
+
+// Candidate rows: one per anchor, the RANSAC plane, and the current plane.
+constexpr int kMaxDeformableCandidates = kMaxAnchors + 2;
+
+MSP_HD bool UsableCandidate(const PassParams& p, int col, int row, const PlaneHypothesis& h) {
+  return DepthInRange(p, h.depth) && Dot(h.normal, ViewRay(p.ref_camera, static_cast<float>(col),
+                                                           static_cast<float>(row))) < 0.0f;
+}
+
+// Falls back to the conventional update when no candidate is usable.
+MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int iteration,
+                                  const AnchorSet& anchors, const PlaneMapView& planes,
+                                  const DeformableParams& d) {
+  const PixelStateView& s = p.state;
+  const int i = s.Index(col, row);
+  const uint32_t pixel = static_cast<uint32_t>(i);
+  PlaneHypothesis cand[kMaxDeformableCandidates];
+  bool has[kMaxDeformableCandidates];
+  float costs[kMaxDeformableCandidates * kMaxSourceViews];
+  const int num_anchors = anchors.count < kMaxAnchors ? anchors.count : kMaxAnchors;
+  for (int k = 0; k < num_anchors; ++k) {
+    const PlaneHypothesis h = planes.Get(planes.width * anchors.rows[k] + anchors.cols[k]);
+    cand[k].normal = h.normal;
+    cand[k].depth = h.depth > 0.0f ? PropagatedDepth(p.ref_camera, anchors.cols[k], anchors.rows[k],
+                                                     h, col, row)
+                                   : 0.0f;
+    has[k] = UsableCandidate(p, col, row, cand[k]);
+  }
+  const int fit = num_anchors;  // the RANSAC plane
+  cand[fit] = AnchorPlaneHypothesis(p.ref_camera, anchors, col, row);
+  has[fit] = UsableCandidate(p, col, row, cand[fit]);
+  const int current = fit + 1;
+  cand[current] = s.Get(i);
+  has[current] = cand[current].depth > 0.0f;
+  const int num_rows = current + 1;
+  bool any = false;
+  for (int k = 0; k < num_rows; ++k) {
+    float* row_costs = costs + k * kMaxSourceViews;
+    if (has[k]) {
+      DeformableViewCosts(p, col, row, cand[k], anchors, d, nullptr, row_costs);
+      any = true;
+    } else {
+      for (int j = 0; j < p.num_src; ++j) row_costs[j] = kMaxCost;
+    }
+  }
+  if (!any) {
+    UpdatePixel(p, col, row, iteration);
+    return;
+  }
+  Rng select_rng =
+      MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamSelect, pixel));
+  float weights[kMaxSourceViews];
+  const uint32_t mask = SelectViews(costs, current, p.num_src, kMaxSourceViews, iteration,
+                                    s.mask[i], p.num_samples, &select_rng, weights);
+  int best = -1;
+  float best_cost = 1e30f;
+  for (int k = 0; k < num_rows; ++k) {
+    if (!has[k]) continue;
+    const float c = AggregateCost(costs + k * kMaxSourceViews, weights, p.num_src);
+    if (c < best_cost) {
+      best_cost = c;
+      best = k;
+    }
+  }
+  PlaneHypothesis cur = cand[best];
+  Rng refine_rng =
+      MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamRefine, pixel));
+  float c[kMaxSourceViews];
+  for (int k = 0; k < kNumRefinementCandidates; ++k) {
+    const PlaneHypothesis h = RefinementCandidate(p, col, row, cur, k, &refine_rng);
+    if (!DepthInRange(p, h.depth)) continue;
+    DeformableViewCosts(p, col, row, h, anchors, d, weights, c);
+    const float agg = AggregateCost(c, weights, p.num_src);
+    if (agg < best_cost) {
+      best_cost = agg;
+      cur = h;
+    }
+  }
+  s.Set(i, cur);
+  s.mask[i] = mask;
+  // Conventional cost of the chosen plane: what neighbours compare against.
+  ViewCosts(p, col, row, cur, weights, c);
+  s.cost[i] = AggregateCost(c, weights, p.num_src);
+}
+
+}  // namespace core
+}  // namespace msp

@@ -1,0 +1,99 @@
+#include "deformable_sweeps.h"
+
+#include <atomic>
+
+#include "core/deformable_update.h"
+#include "nearest_reliable.h"
+#include "parallel_for.h"
+
+namespace msp {
+namespace {
+
+// Anchor RANSAC draws get their own streams: the seed is salted so they never
+// coincide with the propagation / refinement streams of the same pixel.
+constexpr uint32_t kAnchorSeedSalt = 0xA5C1D3E7u;
+
+}  // namespace
+
+ReliabilityMaps ClassifyState(const core::PassParams& params, const core::ReliabilityParams& rp,
+                              int num_threads) {
+  core::PassParams photometric = params;
+  photometric.geometric = 0;
+  ReliabilityMaps maps;
+  maps.width = params.state.width;
+  maps.height = params.state.height;
+  maps.classes.assign(static_cast<size_t>(maps.width) * maps.height, core::kUnknown);
+  std::atomic<int> reliable{0}, unreliable{0};
+  ParallelFor(0, maps.height, num_threads, [&](int row) {
+    int r = 0, u = 0;
+    for (int col = 0; col < maps.width; ++col) {
+      const uint8_t c = core::ClassifyPixel(photometric, col, row, rp);
+      maps.classes[static_cast<size_t>(row) * maps.width + col] = c;
+      r += c == core::kReliable;
+      u += c == core::kUnreliable;
+    }
+    reliable += r;
+    unreliable += u;
+  });
+  maps.num_reliable = reliable;
+  maps.num_unreliable = unreliable;
+  maps.nearest = NearestReliablePixels(maps.classes.data(), maps.width, maps.height, num_threads);
+  return maps;
+}
+
+DeformableStats RunDeformableCheckerboardIterations(const core::PassParams& params,
+                                                    const ReliabilityMaps& maps,
+                                                    const DeformableSettings& settings,
+                                                    int num_iterations, int num_threads) {
+  const core::PixelStateView& s = params.state;
+  const int width = s.width, height = s.height;
+  const size_t n = static_cast<size_t>(width) * height;
+  // Slots of the unreliable pixels in the anchor array.
+  std::vector<int> slot(n, -1);
+  int num_slots = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (maps.classes[i] == core::kUnreliable) slot[i] = num_slots++;
+  }
+  std::vector<core::AnchorSet> anchors(num_slots);
+  std::vector<float> depth(n), normal(3 * n);
+  const core::PlaneMapView planes{depth.data(), normal.data(), width, height};
+  const core::AnchorMaps anchor_maps{maps.classes.data(), maps.nearest.data(), depth.data(), width,
+                                     height};
+  DeformableStats stats;
+  for (int iteration = 0; iteration < num_iterations; ++iteration) {
+    depth.assign(s.depth, s.depth + n);
+    normal.assign(s.normal, s.normal + 3 * n);
+    std::atomic<long long> anchored{0};
+    ParallelFor(0, height, num_threads, [&](int row) {
+      long long count = 0;
+      for (int col = 0; col < width; ++col) {
+        const int i = row * width + col;
+        if (slot[i] < 0) continue;
+        core::Rng rng =
+            core::MakeRng(core::RngKey(params.seed ^ kAnchorSeedSalt, params.image_id,
+                                       params.pass_id, iteration, static_cast<uint32_t>(i)));
+        core::FindAnchors(params.ref_camera, anchor_maps, col, row, settings.anchors, &rng,
+                          &anchors[slot[i]]);
+        count += anchors[slot[i]].count > 0;
+      }
+      anchored += count;
+    });
+    stats.anchored_updates += anchored;
+    for (int color = 0; color < 2; ++color) {
+      ParallelFor(0, height, num_threads, [&](int row) {
+        for (int col = (row + color) & 1; col < width; col += 2) {
+          const int k = slot[row * width + col];
+          if (k >= 0 && anchors[k].count > 0) {
+            core::DeformableUpdatePixel(params, col, row, iteration, anchors[k], planes,
+                                        settings.cost);
+          } else {
+            core::UpdatePixel(params, col, row, iteration);
+          }
+        }
+      });
+    }
+  }
+  return stats;
+}
+
+}  // namespace msp

@@ -1,0 +1,51 @@
+// Whole-image steps of deformable patch matching on the CPU (APD-MVS
+// baseline, algorithm.md 2): classify every pixel after a pass, map each pixel
+// to its nearest reliable pixel, and run red-black iterations in which
+// unreliable pixels with anchors take the deformable update and every other
+// pixel the conventional one.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/anchors.h"
+#include "core/deformable_cost.h"
+#include "core/patch_match_kernel.h"
+#include "core/reliability.h"
+
+namespace msp {
+
+struct ReliabilityMaps {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> classes;  // core::kReliable / kUnreliable / kUnknown
+  std::vector<int> nearest;      // nearest reliable pixel index, -1 = none
+  int num_reliable = 0;
+  int num_unreliable = 0;
+};
+
+// Classifies every pixel of params.state under the photometric cost (the
+// thresholds are NCC costs, so the geometric term is left out) and builds the
+// nearest-reliable map.
+ReliabilityMaps ClassifyState(const core::PassParams& params, const core::ReliabilityParams& rp,
+                              int num_threads);
+
+struct DeformableSettings {
+  core::AnchorParams anchors;
+  core::DeformableParams cost;
+};
+
+// Statistics of one call, for the log.
+struct DeformableStats {
+  long long anchored_updates = 0;  // deformable pixel updates over all iterations
+};
+
+// `num_iterations` red-black iterations. Before each, the anchors of every
+// unreliable pixel are searched on a snapshot of the planes; during the
+// sweeps those pixels use the deformable update, the others the conventional.
+DeformableStats RunDeformableCheckerboardIterations(const core::PassParams& params,
+                                                    const ReliabilityMaps& maps,
+                                                    const DeformableSettings& settings,
+                                                    int num_iterations, int num_threads);
+
+}  // namespace msp

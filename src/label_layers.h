@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace msp {
@@ -20,6 +21,21 @@ struct LabelLayers {
   int32_t At(int level, int row, int col) const {
     return levels[level][static_cast<size_t>(row) * width + col];
   }
+};
+
+// Where an image's layers come from: user mask files, or the embedded
+// segmenter (multiscale_segmentation.h) when the image has none.
+enum class LabelSource { kMaskFiles, kEmbeddedSegmenter };
+
+inline std::string LabelSourceName(LabelSource source) {
+  return source == LabelSource::kMaskFiles ? "mask files" : "embedded segmenter";
+}
+
+// The layers of one image and their source; `layers` is empty for
+// kEmbeddedSegmenter until the segmenter has run.
+struct ImageLabelLayers {
+  LabelSource source = LabelSource::kEmbeddedSegmenter;
+  LabelLayers layers;
 };
 
 // Nearest-neighbour resampling of a label map (labels must never blend): the

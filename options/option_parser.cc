@@ -8,6 +8,8 @@
 #include <sstream>
 #include <utility>
 
+#include "core/prior_limits.h"
+
 namespace msp {
 namespace {
 
@@ -184,6 +186,27 @@ void DefineOptions(StereoCommandOptions* o, CompatibilityOptions* c, OptionTable
          "[0, 2]. With several curve minima, the others must lie this far above the lowest.");
   t->Add(ms + "anchor_max_distance", &m.anchor_max_distance,
          "Anchor search range in pixels of the current round (>= 2).");
+  t->Add(ms + "segmentation_prior", &m.segmentation_prior,
+         "Confine anchors by the multi-granularity segmentation prior (mask layers from "
+         "--MspStereo.mask_path, else the embedded segmenter); false = w/o Mul.");
+  t->Add(ms + "edge_aggregation", &m.edge_aggregation,
+         "Aggregate the mask layers per region by their best anchor subsets (eqs. 4-5); false = "
+         "the union of all layers' boundaries (w/o Agr.).");
+  t->Add(ms + "edge_refinement", &m.edge_refinement,
+         "Refine the aggregated edges with the colour/depth CRF (eq. 6); false = w/o Ref.");
+  t->Add(ms + "num_mask_levels", &m.num_mask_levels,
+         "Label layers of the embedded segmenter for images without mask files (1.." +
+             std::to_string(core::kMaxLabelLayers) + "); mask files set their own count.");
+  t->Add(ms + "write_previews", &m.write_previews,
+         "Write stereo/prior_previews/<image>.png with the aggregated (red) and refined (green) "
+         "edges over the image.");
+  t->Add(ms + "crf_alpha", &m.crf_alpha,
+         "(0, inf). CRF depth bandwidth as a fraction of the depth range (eq. 6 alpha).");
+  t->Add(ms + "crf_beta", &m.crf_beta,
+         "(0, inf). CRF colour bandwidth on |I_p . I_q - 1| of normalised RGB (eq. 6 beta).");
+  t->Add(ms + "crf_unary_confidence", &m.crf_unary_confidence,
+         "(0, 1). Probability the CRF unary gives the aggregated label.");
+  t->Add(ms + "crf_iterations", &m.crf_iterations, "Mean-field iterations of the CRF (>= 1).");
 }
 
 bool IsHelpFlag(const std::string& arg) { return arg == "-h" || arg == "--help"; }

@@ -86,6 +86,30 @@ struct MspStereoOptions {
   double reliable_min_spread = 0.2;
   // Anchor search range in pixels of the current round (APD: 100).
   int anchor_max_distance = 100;
+  // Multi-granularity segmentation prior (paper "Multi-granularity
+  // Segmentation Prior"; algorithm.md 3.1-3.2): anchors must not cross the
+  // depth edges it finds. false = the ablation "w/o Mul.".
+  bool segmentation_prior = true;
+  // Aggregate the layers per region by their best anchor subsets (eqs. 4-5);
+  // false = the union of all layers' boundaries ("w/o Agr.").
+  bool edge_aggregation = true;
+  // Refine the aggregated edges with the colour/depth CRF (eq. 6); false =
+  // "w/o Ref.".
+  bool edge_refinement = true;
+  // Label layers the embedded segmenter builds when an image has no mask
+  // files (paper: 3, scene / instance / feature level). Mask files set their
+  // own count.
+  int num_mask_levels = 3;
+  // Write <workspace>/stereo/prior_previews/<image>.png: the aggregated (red)
+  // and refined (green) edges over the image.
+  bool write_previews = false;
+  // CRF of eq. 6: depth bandwidth alpha as a fraction of the depth range,
+  // colour bandwidth beta on |I_p . I_q - 1|, probability of the aggregated
+  // label in the unary, mean-field iterations t = 1..crf_iterations.
+  double crf_alpha = 0.02;
+  double crf_beta = 0.05;
+  double crf_unary_confidence = 0.7;
+  int crf_iterations = 5;
 };
 
 // Everything the msp_stereo command needs.

@@ -148,5 +148,26 @@ TEST(OptionCheck, WorkspacePathRequired) {
   EXPECT_NE(CheckError(o).find("--workspace_path"), std::string::npos);
 }
 
+TEST(OptionCheck, SegmentationPriorRules) {
+  const std::vector<BadCase> cases = {
+      {"MspStereo.num_mask_levels", "0", "[1, 32]", [](auto* o) { o->msp.num_mask_levels = 0; }},
+      {"MspStereo.num_mask_levels", "33", "kMaxLabelLayers",
+       [](auto* o) { o->msp.num_mask_levels = 33; }},
+      {"MspStereo.crf_alpha", "0", "> 0", [](auto* o) { o->msp.crf_alpha = 0; }},
+      {"MspStereo.crf_beta", "-1", "> 0", [](auto* o) { o->msp.crf_beta = -1; }},
+      {"MspStereo.crf_unary_confidence", "1", "(0, 1)",
+       [](auto* o) { o->msp.crf_unary_confidence = 1; }},
+      {"MspStereo.crf_iterations", "0", "> 0", [](auto* o) { o->msp.crf_iterations = 0; }},
+  };
+  for (const BadCase& c : cases) {
+    StereoCommandOptions o = Valid();
+    c.apply(&o);
+    const std::string message = CheckError(o);
+    EXPECT_NE(message.find("--" + c.option), std::string::npos) << message;
+    EXPECT_NE(message.find(c.value), std::string::npos) << message;
+    EXPECT_NE(message.find(c.range), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace msp

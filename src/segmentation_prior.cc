@@ -84,10 +84,12 @@ std::vector<uint32_t> ChooseBestLayers(const LabelLayers& layers,
   const int num_layers = layers.NumLevels();
   assert(num_layers <= core::kMaxLabelLayers);
   assert(static_cast<int>(boundaries.size()) == num_layers);
-  std::vector<core::BoundaryView> views;
-  for (const std::vector<uint8_t>& boundary : boundaries) {
-    views.push_back(MakeBoundaryView(boundary, layers.width, layers.height));
+  // Bit n of a pixel = the pixel is on B_n: one walk per anchor tests all layers.
+  std::vector<uint32_t> packed(static_cast<size_t>(layers.width) * layers.height, 0u);
+  for (int n = 0; n < num_layers; ++n) {
+    for (size_t i = 0; i < packed.size(); ++i) packed[i] |= uint32_t{boundaries[n][i]} << n;
   }
+  const core::LayerBoundaryView view{packed.data(), layers.width, layers.height, layers.width};
   std::vector<uint32_t> best(static_cast<size_t>(layers.width) * layers.height, 0u);
   const int num_pixels = static_cast<int>(pixels.size());
   const int num_tasks = (num_pixels + kPixelsPerTask - 1) / kPixelsPerTask;
@@ -98,8 +100,7 @@ std::vector<uint32_t> ChooseBestLayers(const LabelLayers& layers,
       const uint32_t pixel = static_cast<uint32_t>(anchors.row * layers.width + anchors.col);
       const core::Rng rng = core::MakeRng(
           core::RngKey(options.seed, options.image, options.pass, kBestLayerStream, pixel));
-      best[pixel] =
-          core::BestLayersForPixel(anchors, views.data(), num_layers, options.ransac, rng);
+      best[pixel] = core::BestLayersForPixel(anchors, view, num_layers, options.ransac, rng);
     }
   });
   return best;

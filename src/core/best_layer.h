@@ -17,6 +17,10 @@ namespace core {
 
 // Three points span a plane; smaller subsets cannot be planarised (A_n = 0).
 constexpr int kMinPlanePoints = 3;
+// Sampling stops once a triangle-only-of-inliers has been drawn with this
+// probability, given the best inlier ratio so far (adaptive RANSAC); the
+// anchors were themselves RANSAC inliers, so most subsets stop early.
+constexpr float kRansacConfidence = 0.99f;
 // A sample triangle whose sine of the angle at its first vertex is below
 // this is treated as collinear (no plane).
 constexpr float kCollinearSine = 1e-3f;
@@ -55,7 +59,8 @@ MSP_HD int CountPlaneInliers(const Vec3* points, const int* index, int n, int a,
 
 // A_n: the largest inlier count of a plane through three anchors of `subset`.
 // Subsets with at most `iterations` triangles are searched exhaustively (exact
-// and draw-free); larger ones sample `iterations` triangles from `rng`.
+// and draw-free); larger ones sample up to `iterations` triangles from
+// `rng`, fewer when the best plane so far makes more draws pointless.
 MSP_HD int SubsetPlaneInliers(const Vec3* points, uint32_t subset, const PlaneRansacParams& params,
                               Rng rng) {
   int index[kMaxPriorAnchors];
@@ -72,12 +77,20 @@ MSP_HD int SubsetPlaneInliers(const Vec3* points, uint32_t subset, const PlaneRa
         for (int c = b + 1; c < n; ++c) {
           const int count = CountPlaneInliers(points, index, n, a, b, c, params.inlier_distance);
           best = count > best ? count : best;
+          if (best == n) return best;  // cannot do better
         }
       }
     }
     return best;
   }
   for (int it = 0; it < params.iterations; ++it) {
+    if (best > 0) {
+      const float ratio = static_cast<float>(best) / n;
+      const float all_inliers = ratio * ratio * ratio;  // P(a triangle of inliers)
+      if (all_inliers >= 1.0f || it >= logf(1.0f - kRansacConfidence) / logf(1.0f - all_inliers)) {
+        break;
+      }
+    }
     const int a = static_cast<int>(rng.Uniform() * n) % n;
     const int b = static_cast<int>(rng.Uniform() * n) % n;
     const int c = static_cast<int>(rng.Uniform() * n) % n;
@@ -129,14 +142,12 @@ MSP_HD uint32_t BestLayers(const PriorAnchors& anchors, const uint32_t* subsets,
   return best;
 }
 
-// Per-layer subsets and eq. 4 in one call: `boundaries[n]` is B_n.
-MSP_HD uint32_t BestLayersForPixel(const PriorAnchors& anchors, const BoundaryView* boundaries,
+// Per-layer subsets and eq. 4 in one call: bit n of `boundaries` is B_n.
+MSP_HD uint32_t BestLayersForPixel(const PriorAnchors& anchors, const LayerBoundaryView& boundaries,
                                    int num_layers, const PlaneRansacParams& params, Rng rng) {
   uint32_t subsets[kMaxLabelLayers];
-  for (int n = 0; n < num_layers && n < kMaxLabelLayers; ++n) {
-    subsets[n] = AdmissibleAnchors(boundaries[n], anchors.col, anchors.row, anchors.cols,
-                                   anchors.rows, anchors.count);
-  }
+  AdmissibleAnchorsPerLayer(boundaries, num_layers, anchors.col, anchors.row, anchors.cols,
+                            anchors.rows, anchors.count, subsets);
   return BestLayers(anchors, subsets, num_layers, params, rng);
 }
 

@@ -79,9 +79,9 @@ TEST(BestLayer, LayerWhoseBoundaryFollowsTheDepthEdgeIsChosen) {
   }
   // p is at (10, 10) on the edge pixel of its own (left) region.
   PriorAnchors a = MakeAnchors({2, 4, 6, 8, 3, 5, 14, 16, 18}, {2, 4, 6, 8, 15, 12, 3, 9, 15});
-  const BoundaryView views[3] = {{none.data(), kSize, kSize, kSize},
-                                 {right.data(), kSize, kSize, kSize},
-                                 {wrong.data(), kSize, kSize, kSize}};
+  std::vector<uint32_t> packed(kSize * kSize);
+  for (int i = 0; i < kSize * kSize; ++i) packed[i] = none[i] | right[i] << 1 | wrong[i] << 2;
+  const LayerBoundaryView views{packed.data(), kSize, kSize, kSize};
   EXPECT_EQ(BestLayersForPixel(a, views, 3, kRansac, MakeRng(kKey)), 0b010u);
 }
 

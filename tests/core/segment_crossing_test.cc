@@ -66,6 +66,33 @@ TEST(SegmentCrossing, AdmissibleAnchorsIsABitSet) {
   EXPECT_EQ(AdmissibleAnchors(View(b), 4, 5, cols, rows, 0), 0u);
 }
 
+TEST(SegmentCrossing, OneWalkPerAnchorEqualsOneWalkPerLayer) {
+  // Three layers: a vertical edge, a horizontal edge, none.
+  const std::vector<uint8_t> vertical = VerticalEdge(8);
+  std::vector<uint8_t> horizontal(kSize * kSize, 0), none(kSize * kSize, 0);
+  for (int col = 0; col < kSize; ++col) horizontal[5 * kSize + col] = 1;
+  std::vector<uint32_t> packed(kSize * kSize);
+  for (int i = 0; i < kSize * kSize; ++i) packed[i] = vertical[i] | horizontal[i] << 1;
+  const LayerBoundaryView layers{packed.data(), kSize, kSize, kSize};
+  int cols[kMaxPriorAnchors], rows[kMaxPriorAnchors];
+  for (int i = 0; i < kMaxPriorAnchors; ++i) {
+    cols[i] = (i * 7) % kSize;
+    rows[i] = (i * 11 + 3) % kSize;
+  }
+  const std::vector<uint8_t>* maps[3] = {&vertical, &horizontal, &none};
+  for (int p_row = 0; p_row < kSize; p_row += 3) {
+    for (int p_col = 0; p_col < kSize; p_col += 2) {
+      uint32_t subsets[3];
+      AdmissibleAnchorsPerLayer(layers, 3, p_col, p_row, cols, rows, kMaxPriorAnchors, subsets);
+      for (int n = 0; n < 3; ++n) {
+        EXPECT_EQ(subsets[n],
+                  AdmissibleAnchors(View(*maps[n]), p_col, p_row, cols, rows, kMaxPriorAnchors))
+            << "layer " << n << " p " << p_col << "," << p_row;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace core
 }  // namespace msp

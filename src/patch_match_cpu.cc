@@ -9,6 +9,7 @@
 #include <set>
 
 #include "core/output_filter.h"
+#include "deformable_sweeps.h"
 #include "image_pyramid.h"
 #include "parallel_for.h"
 #include "state_cache.h"
@@ -56,8 +57,7 @@ std::vector<int> ProblemsToRun(const std::vector<Problem>& problems, const MapSi
   return std::vector<int>(needed.begin(), needed.end());
 }
 
-core::NccParams MakeNccParams(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp,
-                              int level_halvings) {
+core::NccParams MakeNccParams(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp) {
   core::NccParams ncc;
   ncc.window_radius = pm.window_radius;
   ncc.window_step = msp.window_step;
@@ -65,7 +65,6 @@ core::NccParams MakeNccParams(const PatchMatchStereoOptions& pm, const MspStereo
   const double sigma_spatial = pm.sigma_spatial > 0 ? pm.sigma_spatial : pm.window_radius;
   ncc.sigma_spatial = static_cast<float>(sigma_spatial);
   ncc.sigma_color = static_cast<float>(pm.sigma_color);
-  (void)level_halvings;
   return ncc;
 }
 
@@ -151,7 +150,7 @@ class CpuRunner {
                                   it->second.width};
       }
     }
-    p.ncc = MakeNccParams(pm_, msp_, 0);
+    p.ncc = MakeNccParams(pm_, msp_);
     p.depth_min = problem.depth_min;
     p.depth_max = problem.depth_max;
     p.geometric = geometric ? 1 : 0;
@@ -197,7 +196,12 @@ class CpuRunner {
         } else {
           ScoreState(params, threads_);
         }
-        RunCheckerboardIterations(params, kIterationsPerPass, threads_);
+        if (msp_.deformable && !(round == 0 && pass == 0)) {
+          // The previous pass of this image (the last of the coarser round at a round start).
+          RunDeformableIterations(params, round, pass > 0 ? pass - 1 : num_passes - 1);
+        } else {
+          RunCheckerboardIterations(params, kIterationsPerPass, threads_);
+        }
         MedianFilterState(params, threads_);
         LocalRefineState(params, threads_);
         if (last_round) WriteOutputs(params, problem, pass, num_passes);
@@ -213,6 +217,27 @@ class CpuRunner {
       }
     }
     coarser_.reset(new Level(level));
+  }
+
+  // Deformable patch matching (algorithm.md 2): the state the previous pass
+  // left (upsampled at a round start) is classified, then unreliable pixels
+  // with anchors take the deformable update during the pass's iterations.
+  void RunDeformableIterations(const core::PassParams& params, int round, int finished_pass) {
+    core::ReliabilityParams reliability = core::DefaultReliabilityParams(finished_pass);
+    reliability.max_minimum_cost = static_cast<float>(msp_.reliable_max_cost);
+    reliability.single_min_cost = static_cast<float>(msp_.reliable_single_cost);
+    reliability.min_spread = static_cast<float>(msp_.reliable_min_spread);
+    const ReliabilityMaps maps = ClassifyState(params, reliability, threads_);
+    DeformableSettings settings;
+    settings.anchors = core::DefaultAnchorParams(round, params.depth_max - params.depth_min,
+                                                 msp_.anchor_max_distance);
+    settings.cost = core::DefaultDeformableParams();
+    const DeformableStats stats =
+        RunDeformableCheckerboardIterations(params, maps, settings, kIterationsPerPass, threads_);
+    const double pixels = static_cast<double>(maps.width) * maps.height;
+    std::printf("  reliable %.1f%%, unreliable %.1f%%, deformable updates %.1f%% of pixels\n",
+                100.0 * maps.num_reliable / pixels, 100.0 * maps.num_unreliable / pixels,
+                100.0 * stats.anchored_updates / (pixels * kIterationsPerPass));
   }
 
   // The state a problem starts a pass with: fresh (first pass overall),

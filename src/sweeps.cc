@@ -53,6 +53,7 @@ void MedianFilterState(const core::PassParams& params, int num_threads) {
   const core::PixelStateView& s = params.state;
   const std::vector<float> depth(s.depth, s.depth + s.width * s.height);
   const std::vector<float> normal(s.normal, s.normal + 3 * s.width * s.height);
+  const std::vector<uint32_t> mask(s.mask, s.mask + s.width * s.height);
   const int n = s.width * s.height;
   ForEachPixel(params, num_threads, [&](int col, int row) {
     const int i = s.Index(col, row);
@@ -82,7 +83,7 @@ void MedianFilterState(const core::PassParams& params, int num_threads) {
     const float d = core::PropagatedDepth(params.ref_camera, q % s.width, q / s.width, hq, col, row);
     if (!core::DepthInRange(params, d)) return;
     s.Set(i, core::PlaneHypothesis{d, hq.normal});
-    s.mask[i] = s.mask[q];
+    s.mask[i] = mask[q];
   });
 }
 

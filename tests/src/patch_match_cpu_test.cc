@@ -97,6 +97,24 @@ TEST(PatchMatchCpu, DeterministicAcrossThreadCounts) {
   }
 }
 
+// A cache budget smaller than one image's state spills every other state to
+// the scratch folder between passes; the maps must not change.
+TEST(PatchMatchCpu, SpillingStateGivesIdenticalMaps) {
+  const std::vector<View> views =
+      testing_support::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
+  const std::vector<Problem> problems = AllProblems(3);
+  PatchMatchStereoOptions pm;
+  MspStereoOptions msp;
+  MemorySink in_memory, spilled;
+  RunPatchMatchCpu(views, problems, pm, msp, "/tmp", in_memory);
+  pm.cache_size = 1e-6;  // ~1 kB
+  RunPatchMatchCpu(views, problems, pm, msp, testing::TempDir(), spilled);
+  ASSERT_EQ(spilled.maps.size(), in_memory.maps.size());
+  for (const auto& entry : in_memory.maps) {
+    EXPECT_EQ(entry.second.first.data, spilled.maps.at(entry.first).first.data);
+  }
+}
+
 TEST(PatchMatchCpu, SkipsImagesWithFinalOutputs) {
   const std::vector<View> views = testing_support::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
   PatchMatchStereoOptions pm;

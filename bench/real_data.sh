@@ -2,20 +2,27 @@
 # Runs the whole workflow on a ready COLMAP dense workspace (e.g. one of
 # ../shared/data/*) and prints time, peak memory and fused-cloud figures.
 #
-#   bench/real_data.sh <dataset dir> <output dir> [--bbox x0 y0 z0 x1 y1 z1] [msp_stereo options...]
+#   bench/real_data.sh <dataset dir> <output dir> [--sources N] [--bbox x0 y0 z0 x1 y1 z1]
+#                      [msp_stereo options...]
 #
 # The dataset is not modified: images are symlinked, sparse/ and the cfg files
-# copied into <output dir>, which is recreated.
+# copied into <output dir>, which is recreated. --sources N rewrites the copied
+# patch-match.cfg to `__auto__, N` (COLMAP's own syntax for N source views).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 src=$(cd "$1" && pwd); out=$2; shift 2
+sources=""
+if [ "${1:-}" = "--sources" ]; then sources=$2; shift 2; fi
 bbox=()
 if [ "${1:-}" = "--bbox" ]; then bbox=(--bbox "$2" "$3" "$4" "$5" "$6" "$7"); shift 7; fi
 rm -rf "$out"; mkdir -p "$out/stereo"
 ln -s "$src/images" "$out/images"
 cp -r "$src/sparse" "$out/"
 cp "$src/stereo/patch-match.cfg" "$src/stereo/fusion.cfg" "$out/stereo/"
-/usr/bin/time -v "$root/build/bin/msp_stereo" --workspace_path "$out" "$@" \
+if [ -n "$sources" ]; then
+  sed -i "s/^__auto__.*/__auto__, $sources/" "$out/stereo/patch-match.cfg"
+fi
+/usr/bin/time -v "${MSP_BIN:-$root/build/bin}/msp_stereo" --workspace_path "$out" "$@" \
   > "$out/stereo.log" 2> "$out/time.log"
 colmap stereo_fusion --workspace_path "$out" --input_type geometric \
   --output_path "$out/fused.ply" > "$out/fusion.log" 2>&1

@@ -5,8 +5,9 @@
 // image already has its outputs, so nothing is recomputed or rewritten.
 //
 // Figures measured when the tolerances were set (320x240, 6 views, seed 1,
-// conventional core of the CPU back-end): valid pixels within 5 % depth 60.9 %,
-// fused accuracy at 2 % of the extent 96.9 %, F1 over >= 3-view surface 48.6 %.
+// default options = deformable patches on): valid pixels within 5 % depth
+// 61.9 %, fused accuracy at 2 % of the extent 91.1 %, F1 over >= 3-view surface
+// 61.4 %. (Conventional core, --MspStereo.deformable false: 60.9 %, 96.9 %, 48.6 %.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,9 +27,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // Tolerances, a little below what was measured, so a regression fails.
-constexpr double kMinMapAccuracy5 = 0.55;      // valid pixels within 5 % depth
-constexpr double kMinFusedAccuracyCoarse = 0.90;  // fused points within 2 % of the extent
-constexpr double kMinF1MultiCoarse = 0.44;        // F1 over >= 3-view surface at 2 %
+constexpr double kMinMapAccuracy5 = 0.57;      // valid pixels within 5 % depth
+constexpr double kMinFusedAccuracyCoarse = 0.87;  // fused points within 2 % of the extent
+constexpr double kMinF1MultiCoarse = 0.56;        // F1 over >= 3-view surface at 2 %
 constexpr int kNumViews = 6;
 
 std::string RealColmap() {

@@ -4,8 +4,8 @@
     ply_stats.py fused.ply [--bbox x0 y0 z0 x1 y1 z1 [--margin 0.005]] [--render out.png]
 
 The rendering looks along the cloud's smallest principal axis (orthographic,
-nearest point wins), coloured with the points' colours, so a person can see
-what was reconstructed.
+nearest point wins, 2x2 splats), shaded by the points' normals (brighter =
+facing the viewer), so a person can see the shape that was reconstructed.
 """
 import argparse
 
@@ -23,11 +23,11 @@ def read_ply(path):
                           ("nz", "<f4"), ("r", "u1"), ("g", "u1"), ("b", "u1")])
         data = np.frombuffer(f.read(n * dtype.itemsize), dtype=dtype, count=n)
     xyz = np.stack([data["x"], data["y"], data["z"]], 1).astype(np.float64)
-    rgb = np.stack([data["r"], data["g"], data["b"]], 1)
-    return xyz, rgb
+    normals = np.stack([data["nx"], data["ny"], data["nz"]], 1).astype(np.float64)
+    return xyz, normals
 
 
-def render(xyz, rgb, path, size=800):
+def render(xyz, normals, path, size=600):
     centre = np.median(xyz, 0)
     _, _, vt = np.linalg.svd(xyz - centre, full_matrices=False)
     uv = (xyz - centre) @ vt[:2].T
@@ -37,10 +37,13 @@ def render(xyz, rgb, path, size=800):
     px = ((uv - lo) * scale + 10).astype(int)
     keep = (px[:, 0] >= 0) & (px[:, 0] < size) & (px[:, 1] >= 0) & (px[:, 1] < size)
     order = np.argsort(-depth[keep])  # far first, near last (nearest wins)
-    img = np.zeros((size, size, 3), np.uint8)
-    p, c = px[keep][order], rgb[keep][order]
-    img[p[:, 1], p[:, 0]] = c[:, ::-1]
-    cv2.imwrite(path, img)
+    shade = (40 + 215 * np.abs(normals @ vt[2]))[keep][order].astype(np.uint8)
+    img = np.zeros((size + 1, size + 1), np.uint8)
+    p = px[keep][order]
+    for dy in (0, 1):
+        for dx in (0, 1):
+            img[p[:, 1] + dy, p[:, 0] + dx] = shade
+    cv2.imwrite(path, img[:size, :size])
 
 
 def main():
@@ -50,7 +53,7 @@ def main():
     parser.add_argument("--margin", type=float, default=0.005)
     parser.add_argument("--render")
     args = parser.parse_args()
-    xyz, rgb = read_ply(args.ply)
+    xyz, normals = read_ply(args.ply)
     print(f"fused points: {len(xyz)}")
     if args.bbox and len(xyz):
         lo = np.array(args.bbox[:3]) - args.margin
@@ -58,7 +61,7 @@ def main():
         inside = np.all((xyz >= lo) & (xyz <= hi), 1)
         print(f"inside bbox (+{args.margin} m): {inside.sum()} = {100.0 * inside.mean():.1f} %")
     if args.render and len(xyz):
-        render(xyz, rgb, args.render)
+        render(xyz, normals, args.render)
         print(f"rendered view: {args.render}")
 
 

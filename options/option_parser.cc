@@ -188,7 +188,8 @@ void DefineOptions(StereoCommandOptions* o, CompatibilityOptions* c, OptionTable
          "Anchor search range in pixels of the current round (>= 2).");
   t->Add(ms + "segmentation_prior", &m.segmentation_prior,
          "Confine anchors by the multi-granularity segmentation prior (mask layers from "
-         "--MspStereo.mask_path, else the embedded segmenter); false = w/o Mul.");
+         "--MspStereo.mask_path, else the embedded segmenter); false = w/o Mul. Not yet used by "
+         "the passes in this version (the prior's steps are built and tested separately).");
   t->Add(ms + "edge_aggregation", &m.edge_aggregation,
          "Aggregate the mask layers per region by their best anchor subsets (eqs. 4-5); false = "
          "the union of all layers' boundaries (w/o Agr.).");

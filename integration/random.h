@@ -6,16 +6,13 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/rng.h"
+
 namespace msp {
 namespace scene {
 
-// SplitMix64 finaliser: a well-mixed 64-bit hash of a 64-bit input.
-inline uint64_t Mix64(uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
+// The same SplitMix64 mixer as the stereo core's counter-based generator.
+using core::Mix64;
 
 inline uint64_t HashKey(uint64_t seed, uint64_t stream, uint64_t index) {
   return Mix64(Mix64(Mix64(seed) ^ stream) ^ index);

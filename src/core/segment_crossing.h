@@ -23,21 +23,22 @@ struct BoundaryView {
   }
 };
 
-// True when the Bresenham line from p to s touches a boundary pixel. p itself
-// is not tested (a pixel lying on an edge still owns its region and must be
-// able to leave it inward); every later pixel up to and including s is,
-// because an anchor on an edge may carry the depth of either side. Pixels
-// outside the image count as boundary.
-MSP_HD bool SegmentCrossesBoundary(const BoundaryView& boundary, int p_col, int p_row, int s_col,
-                                   int s_row) {
-  const int dx = s_col > p_col ? s_col - p_col : p_col - s_col;
-  const int dy = s_row > p_row ? s_row - p_row : p_row - s_row;
-  const int step_x = s_col > p_col ? 1 : -1;
-  const int step_y = s_row > p_row ? 1 : -1;
-  int col = p_col;
-  int row = p_row;
-  int error = dx - dy;
-  while (col != s_col || row != s_row) {
+// Bresenham walk from p towards s: each Next() moves one pixel; p itself is
+// never visited, s is the last pixel visited.
+struct LineWalk {
+  int col, row, s_col, s_row, dx, dy, step_x, step_y, error;
+  MSP_HD LineWalk(int p_col, int p_row, int to_col, int to_row)
+      : col(p_col),
+        row(p_row),
+        s_col(to_col),
+        s_row(to_row),
+        dx(to_col > p_col ? to_col - p_col : p_col - to_col),
+        dy(to_row > p_row ? to_row - p_row : p_row - to_row),
+        step_x(to_col > p_col ? 1 : -1),
+        step_y(to_row > p_row ? 1 : -1),
+        error(dx - dy) {}
+  MSP_HD bool Done() const { return col == s_col && row == s_row; }
+  MSP_HD void Next() {
     const int twice_error = 2 * error;
     if (twice_error > -dy) {
       error -= dy;
@@ -47,7 +48,19 @@ MSP_HD bool SegmentCrossesBoundary(const BoundaryView& boundary, int p_col, int 
       error += dx;
       row += step_y;
     }
-    if (!boundary.Contains(col, row) || boundary.At(col, row)) return true;
+  }
+};
+
+// True when the Bresenham line from p to s touches a boundary pixel. p itself
+// is not tested (a pixel lying on an edge still owns its region and must be
+// able to leave it inward); every later pixel up to and including s is,
+// because an anchor on an edge may carry the depth of either side. Pixels
+// outside the image count as boundary.
+MSP_HD bool SegmentCrossesBoundary(const BoundaryView& boundary, int p_col, int p_row, int s_col,
+                                   int s_row) {
+  for (LineWalk walk(p_col, p_row, s_col, s_row); !walk.Done();) {
+    walk.Next();
+    if (!boundary.Contains(walk.col, walk.row) || boundary.At(walk.col, walk.row)) return true;
   }
   return false;
 }
@@ -83,25 +96,11 @@ struct LayerBoundaryView {
 // Stops early once every layer is crossed.
 MSP_HD uint32_t LayersCrossedBySegment(const LayerBoundaryView& boundaries, uint32_t all_layers,
                                        int p_col, int p_row, int s_col, int s_row) {
-  const int dx = s_col > p_col ? s_col - p_col : p_col - s_col;
-  const int dy = s_row > p_row ? s_row - p_row : p_row - s_row;
-  const int step_x = s_col > p_col ? 1 : -1;
-  const int step_y = s_row > p_row ? 1 : -1;
-  int col = p_col;
-  int row = p_row;
-  int error = dx - dy;
   uint32_t crossed = 0u;
-  while ((col != s_col || row != s_row) && crossed != all_layers) {
-    const int twice_error = 2 * error;
-    if (twice_error > -dy) {
-      error -= dy;
-      col += step_x;
-    }
-    if (twice_error < dx) {
-      error += dx;
-      row += step_y;
-    }
-    crossed |= boundaries.Contains(col, row) ? boundaries.At(col, row) : all_layers;
+  for (LineWalk walk(p_col, p_row, s_col, s_row); !walk.Done() && crossed != all_layers;) {
+    walk.Next();
+    crossed |= boundaries.Contains(walk.col, walk.row) ? boundaries.At(walk.col, walk.row)
+                                                       : all_layers;
   }
   return crossed & all_layers;
 }

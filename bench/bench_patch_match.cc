@@ -3,13 +3,15 @@
 // and whole red-black iterations (pixels per second) on 1 and N threads.
 //
 //   msp_bench_patch_match [width height num_views [ncc]]
+#include <time.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
-#include "core/ncc.h"
+#include "core/patch_match_kernel.h"
 #include "parallel_for.h"
 #include "pixel_state.h"
 #include "sweeps.h"
@@ -17,6 +19,18 @@
 
 namespace msp {
 namespace {
+
+#if defined(MSP_WINDOW_SUMS_AVX2)
+constexpr bool kVectorPath = true;
+#else
+constexpr bool kVectorPath = false;
+#endif
+
+double ThreadCpuSeconds() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
 
 double Seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -51,23 +65,41 @@ void Run(int width, int height, int num_views, bool ncc_only) {
   PixelState state(width, height);
   const core::PassParams p = MakeParams(views, &state);
 
-  // NCC kernel, one core: every pixel against source 0 with a fixed plane.
+  // Matching cost on one core: every pixel against every source with a fixed
+  // plane, in the general form (NccCost) and the fast one (a reference window
+  // prepared once per pixel, as the sweeps do). CPU time of this thread, so a
+  // busy machine disturbs the figures less than wall time would.
   const core::PlaneHypothesis h{2.0f, core::Vec3{0.0f, 0.0f, -1.0f}};
-  auto t0 = std::chrono::steady_clock::now();
-  double sink = 0.0;
-  long evaluations = 0;
-  for (int repeat = 0; repeat < 3; ++repeat) {
+  const int per_side = 2 * p.ncc.window_radius / p.ncc.window_step + 1;
+  const int samples = per_side * per_side;
+  double rate[2] = {0.0, 0.0};
+  for (int fast = 0; fast < 2; ++fast) {
+    const double t0 = ThreadCpuSeconds();
+    double sink = 0.0;
+    long evaluations = 0;
     for (int r = 0; r < height; ++r) {
       for (int c = 0; c < width; ++c) {
-        sink += core::ViewCost(p, 0, c, r, h);
-        ++evaluations;
+        core::RefWindow w;
+        core::PrepareWindow(p, c, r, &w);
+        const float dist = core::PlaneDistance(p.ref_camera, c, r, h);
+        for (int j = 0; j < p.num_src; ++j) {
+          const core::SourceView& s = p.src[j];
+          const core::Mat3 H =
+              core::ComputeHomography(p.ref_camera, s.rel, h.normal, dist);
+          sink += fast ? core::WindowNccCost(w, p.ref_image, s.image, H, p.ncc)
+                       : core::NccCost(p.ref_image, s.image, H, c, r, p.ncc);
+          ++evaluations;
+        }
       }
     }
+    const double seconds = ThreadCpuSeconds() - t0;
+    rate[fast] = evaluations / seconds;
+    std::printf("ncc %s: %.3g evaluations/s on one core (%d samples each), %.2f ns/sample [%g]\n",
+                fast ? "fast (WindowNccCost)" : "general (NccCost)", rate[fast], samples,
+                1e9 * seconds / (evaluations * static_cast<double>(samples)), sink > 0 ? 1.0 : 0.0);
   }
-  const double ncc_seconds = Seconds(t0);
-  std::printf("ncc: %.3g evaluations/s on one core (%d samples each), %.1f ns/sample [%g]\n",
-              evaluations / ncc_seconds, 36, 1e9 * ncc_seconds / (evaluations * 36.0),
-              sink > 0 ? 1.0 : 0.0);
+  std::printf("ncc fast / general: %.2fx (vector path: %s)\n", rate[1] / rate[0],
+              kVectorPath ? "AVX2" : "off");
 
   if (ncc_only) return;
   // Whole iterations.
@@ -75,7 +107,7 @@ void Run(int width, int height, int num_views, bool ncc_only) {
   double per_thread_rate[2] = {0, 0};
   for (int k = 0; k < 2; ++k) {
     InitializeState(p, threads_list[k]);
-    t0 = std::chrono::steady_clock::now();
+    const auto t0 = std::chrono::steady_clock::now();
     RunCheckerboardIterations(p, 1, threads_list[k]);
     const double s = Seconds(t0);
     per_thread_rate[k] = width * height / s;

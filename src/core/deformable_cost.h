@@ -39,41 +39,63 @@ MSP_HD NccParams AnchorNccParams(const NccParams& ncc, const DeformableParams& d
   return a;
 }
 
-// Deformable cost of hypothesis h at (col, row) in source view j; the
-// geometric term is added in geometric passes exactly as in ViewCost.
+// The reference side of p's deformable patch: its own window and one per
+// anchor, prepared once per pixel update (ref_window.h).
+struct DeformableWindows {
+  RefWindow centre;
+  RefWindow anchor[kMaxAnchors];
+  int num_anchors;
+};
+
+MSP_HD void PrepareDeformableWindows(const PassParams& p, int col, int row,
+                                     const AnchorSet& anchors, const DeformableParams& d,
+                                     DeformableWindows* w) {
+  PrepareWindow(p, col, row, &w->centre);
+  w->num_anchors = anchors.count < kMaxAnchors ? anchors.count : kMaxAnchors;
+  for (int k = 0; k < w->num_anchors; ++k) {
+    PrepareRefWindow(p.ref_image, anchors.cols[k], anchors.rows[k], d.anchor_window_radius,
+                     d.anchor_window_step, 0, &w->anchor[k]);
+  }
+}
+
+// Deformable cost of a prepared hypothesis at the centre pixel in source
+// view j; the geometric term is added in geometric passes exactly as in ViewCost.
+MSP_HD float DeformableViewCost(const PassParams& p, const DeformableWindows& w, int j,
+                                const PreparedPlane& plane, const DeformableParams& d) {
+  if (!plane.valid) return kMaxCost;
+  const SourceView& s = p.src[j];
+  const Mat3 H = WarpHomography(s.rel, plane.warp);
+  float cost = WindowNccCost(w.centre, p.ref_image, s.image, H, p.ncc);
+  if (w.num_anchors > 0) {
+    const NccParams anchor_ncc = AnchorNccParams(p.ncc, d);
+    float sum = 0.0f;
+    for (int k = 0; k < w.num_anchors; ++k) {
+      // H maps every reference pixel on p's plane: the anchor window is the
+      // part of p's (deformed) patch that lies around s.
+      sum += WindowNccCost(w.anchor[k], p.ref_image, s.image, H, anchor_ncc);
+    }
+    cost = d.lambda * cost + (1.0f - d.lambda) * (sum / w.num_anchors);
+  }
+  return cost + GeometricTerm(p, j, w.centre.col, w.centre.row, plane.point);
+}
+
+// One-off form for tests: prepares the windows itself.
 MSP_HD float DeformableViewCost(const PassParams& p, int j, int col, int row,
                                 const PlaneHypothesis& h, const AnchorSet& anchors,
                                 const DeformableParams& d) {
-  const SourceView& s = p.src[j];
-  const float dist = PlaneDistance(p.ref_camera, col, row, h);
-  if (!(dist > 0.0f)) return kMaxCost;
-  const Mat3 H = ComputeHomography(p.ref_camera, s.camera, s.rel, h.normal, dist);
-  float cost = NccCost(p.ref_image, s.image, H, col, row, p.ncc);
-  if (anchors.count > 0) {
-    const NccParams anchor_ncc = AnchorNccParams(p.ncc, d);
-    float sum = 0.0f;
-    for (int k = 0; k < anchors.count; ++k) {
-      // H maps every reference pixel on p's plane: the anchor window is the
-      // part of p's (deformed) patch that lies around s.
-      sum += NccCost(p.ref_image, s.image, H, anchors.cols[k], anchors.rows[k], anchor_ncc);
-    }
-    cost = d.lambda * cost + (1.0f - d.lambda) * (sum / anchors.count);
-  }
-  if (p.geometric && s.depth.data != nullptr) {
-    cost += p.geom_lambda *
-            ReprojectionError(p.ref_camera, s.camera, s.depth, col, row, h.depth, p.geom_max_error);
-  }
-  return cost;
+  DeformableWindows w;
+  PrepareDeformableWindows(p, col, row, anchors, d, &w);
+  return DeformableViewCost(p, w, j, PreparePlane(p, col, row, h), d);
 }
 
 // Deformable costs of h in every view with a non-zero weight (all when null).
-MSP_HD void DeformableViewCosts(const PassParams& p, int col, int row, const PlaneHypothesis& h,
-                                const AnchorSet& anchors, const DeformableParams& d,
+MSP_HD void DeformableViewCosts(const PassParams& p, const DeformableWindows& w,
+                                const PlaneHypothesis& h, const DeformableParams& d,
                                 const float* weights, float* costs) {
+  const PreparedPlane plane = PreparePlane(p, w.centre.col, w.centre.row, h);
   for (int j = 0; j < p.num_src; ++j) {
-    costs[j] = (weights == nullptr || weights[j] > 0.0f)
-                   ? DeformableViewCost(p, j, col, row, h, anchors, d)
-                   : kMaxCost;
+    costs[j] = (weights == nullptr || weights[j] > 0.0f) ? DeformableViewCost(p, w, j, plane, d)
+                                                         : kMaxCost;
   }
 }
 

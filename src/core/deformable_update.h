@@ -65,11 +65,13 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
   cand[current] = s.Get(i);
   has[current] = cand[current].depth > 0.0f;
   const int num_rows = current + 1;
+  DeformableWindows windows;
+  PrepareDeformableWindows(p, col, row, anchors, d, &windows);
   bool any = false;
   for (int k = 0; k < num_rows; ++k) {
     float* row_costs = costs + k * kMaxSourceViews;
     if (has[k]) {
-      DeformableViewCosts(p, col, row, cand[k], anchors, d, nullptr, row_costs);
+      DeformableViewCosts(p, windows, cand[k], d, nullptr, row_costs);
       any = true;
     } else {
       for (int j = 0; j < p.num_src; ++j) row_costs[j] = kMaxCost;
@@ -101,7 +103,7 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
   for (int k = 0; k < kNumRefinementCandidates; ++k) {
     const PlaneHypothesis h = RefinementCandidate(p, col, row, cur, k, &refine_rng);
     if (!DepthInRange(p, h.depth)) continue;
-    DeformableViewCosts(p, col, row, h, anchors, d, weights, c);
+    DeformableViewCosts(p, windows, h, d, weights, c);
     const float agg = AggregateCost(c, weights, p.num_src);
     if (agg < best_cost) {
       best_cost = agg;
@@ -111,7 +113,7 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
   s.Set(i, cur);
   s.mask[i] = mask;
   // Conventional cost of the chosen plane: what neighbours compare against.
-  ViewCosts(p, col, row, cur, weights, c);
+  ViewCosts(p, windows.centre, cur, weights, c);
   s.cost[i] = AggregateCost(c, weights, p.num_src);
 }
 

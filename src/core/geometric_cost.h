@@ -14,11 +14,12 @@
 namespace msp {
 namespace core {
 
-// Forward-backward reprojection error in pixels; `max_error` when the point
-// leaves the source image or the source has no depth there.
-MSP_HD float ReprojectionError(const Camera& ref, const Camera& src, const ImageView& src_depth,
-                               int col, int row, float depth, float max_error) {
-  const Vec3 X = CamToWorld(ref, BackProject(ref, static_cast<float>(col), static_cast<float>(row), depth));
+// Forward-backward reprojection error in pixels of the world point X seen at
+// reference pixel (col, row); `max_error` when the point leaves the source
+// image or the source has no depth there.
+MSP_HD float ReprojectionErrorOfPoint(const Camera& ref, const Camera& src,
+                                      const ImageView& src_depth, int col, int row, Vec3 X,
+                                      float max_error) {
   float u, v;
   if (!ProjectCamPoint(src, WorldToCam(src, X), &u, &v)) return max_error;
   // The source map may be at another resolution than the source camera.
@@ -33,7 +34,16 @@ MSP_HD float ReprojectionError(const Camera& ref, const Camera& src, const Image
   float x, y;
   if (!ProjectCamPoint(ref, WorldToCam(ref, Y), &x, &y)) return max_error;
   const float dx = x - col, dy = y - row;
-  return fminf(sqrtf(dx * dx + dy * dy), max_error);
+  const float error = sqrtf(dx * dx + dy * dy);
+  return error < max_error ? error : max_error;
+}
+
+// The same for the point at `depth` on the ray of (col, row).
+MSP_HD float ReprojectionError(const Camera& ref, const Camera& src, const ImageView& src_depth,
+                               int col, int row, float depth, float max_error) {
+  const Vec3 X =
+      CamToWorld(ref, BackProject(ref, static_cast<float>(col), static_cast<float>(row), depth));
+  return ReprojectionErrorOfPoint(ref, src, src_depth, col, row, X, max_error);
 }
 
 }  // namespace core

@@ -10,35 +10,58 @@
 namespace msp {
 namespace core {
 
-// Pose of a source camera relative to the reference: X_src = R X_ref + t.
+// Pose of a source camera relative to the reference: X_src = R X_ref + t,
+// with the parts of eq. 1 that do not depend on the plane: H = KRK - Kt m^T,
+// where KRK = K_j R K_i^-1, Kt = K_j t and m = K_i^-T n / d'.
 struct RelativePose {
   Mat3 R;
   Vec3 t;
+  Mat3 KRK;
+  Vec3 Kt;
 };
+
+MSP_HD Mat3 Intrinsics(const Camera& c) {
+  return Mat3{{c.fx, 0.0f, c.cx, 0.0f, c.fy, c.cy, 0.0f, 0.0f, 1.0f}};
+}
+
+MSP_HD Mat3 InverseIntrinsics(const Camera& c) {
+  return Mat3{{1.0f / c.fx, 0.0f, -c.cx / c.fx, 0.0f, 1.0f / c.fy, -c.cy / c.fy, 0.0f, 0.0f, 1.0f}};
+}
 
 MSP_HD RelativePose ComputeRelativePose(const Camera& ref, const Camera& src) {
   RelativePose rel;
   rel.R = Mul(src.R, Transposed(ref.R));
   rel.t = src.t - Mul(rel.R, ref.t);
+  rel.KRK = Mul(Intrinsics(src), Mul(rel.R, InverseIntrinsics(ref)));
+  rel.Kt = Mul(Intrinsics(src), rel.t);
   return rel;
 }
 
-// Homography (row-major) for the plane n^T X + dist = 0 in the reference frame.
-MSP_HD Mat3 ComputeHomography(const Camera& ref, const Camera& src, const RelativePose& rel,
-                              Vec3 n, float dist) {
-  // A = R - t n^T / dist
-  Mat3 A;
+// The plane's part of eq. 1, m = K_i^-T n / d', shared by every source view.
+struct PlaneWarp {
+  float m[3];
+};
+
+MSP_HD PlaneWarp MakePlaneWarp(const Camera& ref, Vec3 n, float dist) {
   const float inv = 1.0f / dist;
-  const float tn[3] = {rel.t.x * inv, rel.t.y * inv, rel.t.z * inv};
-  const float nv[3] = {n.x, n.y, n.z};
+  const float mx = n.x / ref.fx, my = n.y / ref.fy;
+  return PlaneWarp{{mx * inv, my * inv, (n.z - mx * ref.cx - my * ref.cy) * inv}};
+}
+
+// Homography (row-major) of the plane of `warp` into the source of `rel`,
+// which must come from ComputeRelativePose(ref, src).
+MSP_HD Mat3 WarpHomography(const RelativePose& rel, const PlaneWarp& warp) {
+  const float kt[3] = {rel.Kt.x, rel.Kt.y, rel.Kt.z};
+  Mat3 H;
   for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) A.m[3 * r + c] = rel.R.m[3 * r + c] - tn[r] * nv[c];
+    for (int c = 0; c < 3; ++c) H.m[3 * r + c] = rel.KRK.m[3 * r + c] - kt[r] * warp.m[c];
   }
-  // K_src A K_ref^-1, with K^-1 = [1/fx 0 -cx/fx; 0 1/fy -cy/fy; 0 0 1].
-  const Mat3 Kinv = {{1.0f / ref.fx, 0.0f, -ref.cx / ref.fx, 0.0f, 1.0f / ref.fy,
-                      -ref.cy / ref.fy, 0.0f, 0.0f, 1.0f}};
-  const Mat3 K = {{src.fx, 0.0f, src.cx, 0.0f, src.fy, src.cy, 0.0f, 0.0f, 1.0f}};
-  return Mul(K, Mul(A, Kinv));
+  return H;
+}
+
+// Homography (row-major) for the plane n^T X + dist = 0 in the reference frame.
+MSP_HD Mat3 ComputeHomography(const Camera& ref, const RelativePose& rel, Vec3 n, float dist) {
+  return WarpHomography(rel, MakePlaneWarp(ref, n, dist));
 }
 
 // Applies H to pixel (x, y); false when the point maps behind the source camera.

@@ -45,8 +45,10 @@ MSP_HD void LocalRefinePixel(const PassParams& p, int col, int row) {
   MaskWeights(p, mask, weights);
   const float fb = p.ref_camera.fx * MeanBaseline(p, mask);
   if (!(fb > 0.0f)) return;
+  RefWindow w;
+  PrepareWindow(p, col, row, &w);
   float costs[kMaxSourceViews];
-  ViewCosts(p, col, row, cur, weights, costs);
+  ViewCosts(p, w, cur, weights, costs);
   float best_cost = AggregateCost(costs, weights, p.num_src);
   PlaneHypothesis best = cur;
   for (int delta = -kLocalRefineRadius; delta <= kLocalRefineRadius; ++delta) {
@@ -54,7 +56,7 @@ MSP_HD void LocalRefinePixel(const PassParams& p, int col, int row) {
     PlaneHypothesis h = cur;
     h.depth = DepthAtDisparityOffset(fb, cur.depth, static_cast<float>(delta));
     if (!DepthInRange(p, h.depth)) continue;
-    ViewCosts(p, col, row, h, weights, costs);
+    ViewCosts(p, w, h, weights, costs);
     const float c = AggregateCost(costs, weights, p.num_src);
     if (c < best_cost) {
       best_cost = c;

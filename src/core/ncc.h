@@ -50,62 +50,10 @@ MSP_HD float NccFromSums(const NccSums& a) {
   return fminf(fmaxf(1.0f - ncc, 0.0f), kMaxCost);
 }
 
-// True when the whole warped window lies where SampleInterior succeeds. A
-// homography with positive w at the four corners maps the (convex) window to
-// the convex hull of the warped corners, so checking the corners suffices.
-MSP_HD bool WarpedWindowInside(const ImageView& src, const Mat3& H, int col, int row, int r) {
-  const float max_x = src.width - 1.0f, max_y = src.height - 1.0f;
-  for (int corner = 0; corner < 4; ++corner) {
-    const float x = static_cast<float>(col + ((corner & 1) ? r : -r));
-    const float y = static_cast<float>(row + ((corner & 2) ? r : -r));
-    const float w = H.m[6] * x + H.m[7] * y + H.m[8];
-    if (!(w > 0.0f)) return false;
-    const float u = (H.m[0] * x + H.m[1] * y + H.m[2]) / w;
-    const float v = (H.m[3] * x + H.m[4] * y + H.m[5]) / w;
-    if (!(u >= 0.0f && v >= 0.0f && u < max_x && v < max_y)) return false;
-  }
-  return true;
-}
-
-// Uniform-weight sums of a window that lies inside the reference image and
-// whose warp lies inside the source (WarpedWindowInside): no per-sample checks.
-MSP_HD void InteriorWindowSums(const ImageView& ref, const ImageView& src, const Mat3& H, int col,
-                               int row, int r, int step, NccSums* a) {
-  const float x0 = static_cast<float>(col - r);
-  for (int oy = -r; oy <= r; oy += step) {
-    const float y = static_cast<float>(row + oy);
-    const float* ref_row = ref.data + (row + oy) * ref.pitch + col;
-    float h0 = H.m[0] * x0 + H.m[1] * y + H.m[2];
-    float h1 = H.m[3] * x0 + H.m[4] * y + H.m[5];
-    float h2 = H.m[6] * x0 + H.m[7] * y + H.m[8];
-    const float dx0 = H.m[0] * step, dx1 = H.m[3] * step, dx2 = H.m[6] * step;
-    for (int ox = -r; ox <= r; ox += step, h0 += dx0, h1 += dx1, h2 += dx2) {
-      const float inv = 1.0f / h2;
-      const float x = h0 * inv, yy = h1 * inv;
-      const int c0 = static_cast<int>(x), r0 = static_cast<int>(yy);
-      const float fx = x - c0, fy = yy - r0;
-      const float* p0 = src.data + r0 * src.pitch + c0;
-      const float* p1 = p0 + src.pitch;
-      const float top = p0[0] + fx * (p0[1] - p0[0]);
-      const float bottom = p1[0] + fx * (p1[1] - p1[0]);
-      const float sv = top + fy * (bottom - top);
-      const float rv = ref_row[ox];
-      a->r += rv;
-      a->s += sv;
-      a->rr += rv * rv;
-      a->ss += sv * sv;
-      a->rs += rv * sv;
-      ++a->valid;
-    }
-  }
-  a->total = a->valid;
-  a->w = static_cast<float>(a->valid);
-}
-
-// 1 - NCC in [0, 2] for the window centred at reference pixel (col, row).
+// 1 - NCC in [0, 2] for the window centred at reference pixel (col, row): the
+// general form, with bilateral weights and windows over the image borders.
 // The warp of a grid is incremental: one homogeneous add and one divide per
-// sample. Uniform weights with the window inside both images take a lean loop
-// without per-sample checks; bilateral weights and borders take the general one.
+// sample. Hot loops use WindowNccCost (ref_window.h), which falls back here.
 MSP_HD float NccCost(const ImageView& ref, const ImageView& src, const Mat3& H, int col, int row,
                      const NccParams& p) {
   float u, v;
@@ -124,11 +72,6 @@ MSP_HD float NccCost(const ImageView& ref, const ImageView& src, const Mat3& H, 
   const float dx[3] = {H.m[0] * step, H.m[3] * step, H.m[6] * step};
   const float dy[3] = {H.m[1] * step, H.m[4] * step, H.m[7] * step};
   NccSums a = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0, 0};
-  const bool inside = col - r >= 0 && row - r >= 0 && col + r < ref.width && row + r < ref.height;
-  if (inside && !p.bilateral && WarpedWindowInside(src, H, col, row, r)) {
-    InteriorWindowSums(ref, src, H, col, row, r, step, &a);
-    return NccFromSums(a);
-  }
   const float center = ref.At(col, row);
   const float inv_2ss = p.bilateral ? 1.0f / (2.0f * p.sigma_spatial * p.sigma_spatial) : 0.0f;
   const float inv_2cc = p.bilateral ? 1.0f / (2.0f * p.sigma_color * p.sigma_color) : 0.0f;

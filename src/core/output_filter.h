@@ -38,7 +38,7 @@ MSP_HD int CountConsistentViews(const PassParams& p, const FilterParams& f, int 
     if (TriangulationAngle(p.ref_camera.center, s.camera.center, X) < f.min_triangulation_angle) {
       continue;
     }
-    const Mat3 H = ComputeHomography(p.ref_camera, s.camera, s.rel, h.normal, dist);
+    const Mat3 H = ComputeHomography(p.ref_camera, s.rel, h.normal, dist);
     if (1.0f - NccCost(p.ref_image, s.image, H, col, row, p.ncc) < f.min_ncc) continue;
     if (p.geometric && s.depth.data != nullptr &&
         ReprojectionError(p.ref_camera, s.camera, s.depth, col, row, h.depth,

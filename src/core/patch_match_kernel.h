@@ -15,6 +15,7 @@
 #include "core/limits.h"
 #include "core/ncc.h"
 #include "core/plane.h"
+#include "core/ref_window.h"
 #include "core/rng.h"
 #include "core/view_selection.h"
 
@@ -80,25 +81,67 @@ MSP_HD bool DepthInRange(const PassParams& p, float depth) {
   return depth >= p.depth_min && depth <= p.depth_max;
 }
 
-// Cost of hypothesis h at pixel (col, row) in source view j.
-MSP_HD float ViewCost(const PassParams& p, int j, int col, int row, const PlaneHypothesis& h) {
+// The matching window of pixel (col, row), prepared once per pixel update.
+MSP_HD void PrepareWindow(const PassParams& p, int col, int row, RefWindow* w) {
+  PrepareRefWindow(p.ref_image, col, row, p.ncc.window_radius, p.ncc.window_step, p.ncc.bilateral,
+                   w);
+}
+
+// A hypothesis as every source view scores it at pixel (col, row): the
+// plane's part of the homography and the world point of the geometric term,
+// computed once instead of once per view.
+struct PreparedPlane {
+  int valid;  // the plane passes in front of the camera at the pixel
+  PlaneWarp warp;
+  Vec3 point;
+};
+
+MSP_HD PreparedPlane PreparePlane(const PassParams& p, int col, int row,
+                                  const PlaneHypothesis& h) {
+  PreparedPlane prepared;
+  const Vec3 X = BackProject(p.ref_camera, static_cast<float>(col), static_cast<float>(row),
+                             h.depth);
+  const float dist = -Dot(h.normal, X);  // PlaneDistance
+  prepared.valid = dist > 0.0f;
+  if (!prepared.valid) return prepared;
+  prepared.warp = MakePlaneWarp(p.ref_camera, h.normal, dist);
+  prepared.point = CamToWorld(p.ref_camera, X);
+  return prepared;
+}
+
+// Geometric consistency term of source view j (0 in photometric passes).
+MSP_HD float GeometricTerm(const PassParams& p, int j, int col, int row, const Vec3& point) {
   const SourceView& s = p.src[j];
-  const float dist = PlaneDistance(p.ref_camera, col, row, h);
-  if (!(dist > 0.0f)) return kMaxCost;
-  const Mat3 H = ComputeHomography(p.ref_camera, s.camera, s.rel, h.normal, dist);
-  float cost = NccCost(p.ref_image, s.image, H, col, row, p.ncc);
-  if (p.geometric && s.depth.data != nullptr) {
-    cost += p.geom_lambda * ReprojectionError(p.ref_camera, s.camera, s.depth, col, row, h.depth,
-                                              p.geom_max_error);
-  }
-  return cost;
+  if (!p.geometric || s.depth.data == nullptr) return 0.0f;
+  return p.geom_lambda * ReprojectionErrorOfPoint(p.ref_camera, s.camera, s.depth, col, row,
+                                                  point, p.geom_max_error);
+}
+
+// Cost of a prepared hypothesis at the centre of window w in source view j.
+MSP_HD float ViewCost(const PassParams& p, const RefWindow& w, int j, const PreparedPlane& plane) {
+  if (!plane.valid) return kMaxCost;
+  const Mat3 H = WarpHomography(p.src[j].rel, plane.warp);
+  return WindowNccCost(w, p.ref_image, p.src[j].image, H, p.ncc) +
+         GeometricTerm(p, j, w.col, w.row, plane.point);
+}
+
+MSP_HD float ViewCost(const PassParams& p, const RefWindow& w, int j, const PlaneHypothesis& h) {
+  return ViewCost(p, w, j, PreparePlane(p, w.col, w.row, h));
+}
+
+// One-off form for tests and tools: prepares the window itself.
+MSP_HD float ViewCost(const PassParams& p, int j, int col, int row, const PlaneHypothesis& h) {
+  RefWindow w;
+  PrepareWindow(p, col, row, &w);
+  return ViewCost(p, w, j, h);
 }
 
 // Costs of h in every view whose weight is non-zero (all views when weights is null).
-MSP_HD void ViewCosts(const PassParams& p, int col, int row, const PlaneHypothesis& h,
+MSP_HD void ViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypothesis& h,
                       const float* weights, float* costs) {
+  const PreparedPlane plane = PreparePlane(p, w.col, w.row, h);
   for (int j = 0; j < p.num_src; ++j) {
-    costs[j] = (weights == nullptr || weights[j] > 0.0f) ? ViewCost(p, j, col, row, h) : kMaxCost;
+    costs[j] = (weights == nullptr || weights[j] > 0.0f) ? ViewCost(p, w, j, plane) : kMaxCost;
   }
 }
 
@@ -140,7 +183,9 @@ MSP_HD void ScorePixel(const PassParams& p, int col, int row) {
     p.state.cost[i] = kMaxCost;
     return;
   }
-  ViewCosts(p, col, row, h, nullptr, costs);
+  RefWindow w;
+  PrepareWindow(p, col, row, &w);
+  ViewCosts(p, w, h, nullptr, costs);
   p.state.cost[i] = TopViewsCost(costs, p.num_src);
 }
 
@@ -215,10 +260,12 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
   }
   cand[kNumPropagationCandidates] = s.Get(i);
   has[kNumPropagationCandidates] = cand[kNumPropagationCandidates].depth > 0.0f;
+  RefWindow w;
+  PrepareWindow(p, col, row, &w);
   for (int k = 0; k < kRows; ++k) {
     float* row_costs = costs + k * kMaxSourceViews;
     if (has[k]) {
-      ViewCosts(p, col, row, cand[k], nullptr, row_costs);
+      ViewCosts(p, w, cand[k], nullptr, row_costs);
     } else {
       for (int j = 0; j < p.num_src; ++j) row_costs[j] = kMaxCost;
     }
@@ -243,7 +290,7 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
         MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamRestart, pixel));
     cur = RandomHypothesis(p.ref_camera, col, row, p.depth_min, p.depth_max, &init_rng);
     float c[kMaxSourceViews];
-    ViewCosts(p, col, row, cur, weights, c);
+    ViewCosts(p, w, cur, weights, c);
     best_cost = AggregateCost(c, weights, p.num_src);
   } else {
     cur = cand[best];
@@ -253,7 +300,7 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
     const PlaneHypothesis h = RefinementCandidate(p, col, row, cur, k, &refine_rng);
     if (!DepthInRange(p, h.depth)) continue;
     float c[kMaxSourceViews];
-    ViewCosts(p, col, row, h, weights, c);
+    ViewCosts(p, w, h, weights, c);
     const float agg = AggregateCost(c, weights, p.num_src);
     if (agg < best_cost) {
       best_cost = agg;

@@ -94,6 +94,8 @@ MSP_HD bool SampleCostCurve(const PassParams& p, int col, int row, float* curve)
   float weights[kMaxSourceViews];
   float costs[kMaxSourceViews];
   MaskWeights(p, mask, weights);
+  RefWindow w;
+  PrepareWindow(p, col, row, &w);
   for (int k = 0; k < kCurveSamples; ++k) {
     PlaneHypothesis h = cur;
     h.depth = DepthAtDisparityOffset(fb, cur.depth, static_cast<float>(k - kCurveHalfWidth));
@@ -101,7 +103,7 @@ MSP_HD bool SampleCostCurve(const PassParams& p, int col, int row, float* curve)
       curve[k] = kMaxCost;
       continue;
     }
-    ViewCosts(p, col, row, h, weights, costs);
+    ViewCosts(p, w, h, weights, costs);
     curve[k] = AggregateCost(costs, weights, p.num_src);
   }
   return true;

@@ -84,10 +84,12 @@ TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
   // All views at once, weights skip a view.
   float costs[kMaxSourceViews];
   const float weights[1] = {1.0f};
-  DeformableViewCosts(s.params, kCol, kRow, truth, a, d, weights, costs);
+  DeformableWindows windows;
+  PrepareDeformableWindows(s.params, kCol, kRow, a, d, &windows);
+  DeformableViewCosts(s.params, windows, truth, d, weights, costs);
   EXPECT_EQ(costs[0], DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d));
   const float skip[1] = {0.0f};
-  DeformableViewCosts(s.params, kCol, kRow, truth, a, d, skip, costs);
+  DeformableViewCosts(s.params, windows, truth, d, skip, costs);
   EXPECT_EQ(costs[0], kMaxCost);
 }
 

@@ -16,7 +16,7 @@ using testing_cameras::Source;
 TEST(Homography, SameCameraIsIdentity) {
   const Camera ref = Reference();
   const RelativePose rel = ComputeRelativePose(ref, ref);
-  const Mat3 H = ComputeHomography(ref, ref, rel, Normalized(Vec3{0.2f, 0.1f, -1.0f}), 3.0f);
+  const Mat3 H = ComputeHomography(ref, rel, Normalized(Vec3{0.2f, 0.1f, -1.0f}), 3.0f);
   const float scale = H.m[8];
   for (int i = 0; i < 9; ++i) EXPECT_NEAR(H.m[i] / scale, (i % 4 == 0) ? 1.0f : 0.0f, 1e-6f);
 }
@@ -27,7 +27,7 @@ TEST(Homography, MapsPlanePointsToTheirProjections) {
   const RelativePose rel = ComputeRelativePose(ref, src);
   const PlaneHypothesis h{2.5f, Normalized(Vec3{0.3f, -0.2f, -1.0f})};
   const float dist = PlaneDistance(ref, 90, 70, h);
-  const Mat3 H = ComputeHomography(ref, src, rel, h.normal, dist);
+  const Mat3 H = ComputeHomography(ref, rel, h.normal, dist);
   for (int row = 10; row < 150; row += 37) {
     for (int col = 5; col < 200; col += 41) {
       const float depth = DepthOnPlane(ref, h.normal, dist, col, row);

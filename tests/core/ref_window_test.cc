@@ -1,0 +1,124 @@
+#include "core/ref_window.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "core/rng.h"
+
+namespace msp {
+namespace core {
+namespace {
+
+constexpr int kW = 48, kH = 36;
+const NccParams kUniform{5, 2, 0, 5.0f, 0.2f};
+
+std::vector<float> Noise(uint64_t seed) {
+  std::vector<float> img(kW * kH);
+  for (int i = 0; i < kW * kH; ++i) img[i] = RandomUniform(Mix64(seed), i);
+  return img;
+}
+
+ImageView View(const std::vector<float>& img) { return ImageView{img.data(), kW, kH, kW}; }
+
+// A mild projective warp: scaled, sheared and shifted a little.
+Mat3 Warp(float shift_x, float shift_y) {
+  return Mat3{{1.03f, 0.02f, shift_x, -0.015f, 0.98f, shift_y, 2e-4f, -1e-4f, 1.0f}};
+}
+
+TEST(RefWindow, PreparedWindowIsNormalised) {
+  const std::vector<float> img = Noise(3);
+  RefWindow w;
+  PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
+  ASSERT_EQ(w.num_samples, 36);
+  EXPECT_EQ(w.textured, 1);
+  float sum = 0.0f, sum_sq = 0.0f;
+  for (int k = 0; k < w.num_samples; ++k) {
+    sum += w.value[k];
+    sum_sq += w.value[k] * w.value[k];
+  }
+  EXPECT_NEAR(sum, 0.0f, 1e-5f);
+  EXPECT_NEAR(sum_sq, 1.0f, 1e-5f);
+  // Padding lanes up to 40 repeat the centre with no weight.
+  for (int k = 36; k < 40; ++k) {
+    EXPECT_EQ(w.x[k], 20.0f);
+    EXPECT_EQ(w.y[k], 15.0f);
+    EXPECT_EQ(w.value[k], 0.0f);
+  }
+}
+
+TEST(RefWindow, BorderBilateralAndLargeWindowsTakeTheGeneralPath) {
+  const std::vector<float> img = Noise(3);
+  RefWindow w;
+  PrepareRefWindow(View(img), 3, 15, 5, 2, 0, &w);
+  EXPECT_EQ(w.num_samples, 0);
+  PrepareRefWindow(View(img), 20, 15, 5, 2, 1, &w);
+  EXPECT_EQ(w.num_samples, 0);
+  PrepareRefWindow(View(img), 20, 15, 5, 1, 0, &w);  // 121 samples
+  EXPECT_EQ(w.num_samples, 0);
+  PrepareRefWindow(View(img), 20, 15, 7, 2, 0, &w);  // 8 x 8 = 64 still fits
+  EXPECT_EQ(w.num_samples, 64);
+}
+
+TEST(RefWindow, CostEqualsTheGeneralNcc) {
+  const std::vector<float> ref = Noise(3);
+  const std::vector<float> src = Noise(4);
+  const std::vector<float> same = ref;
+  int fast = 0;
+  for (int row = 5; row < kH - 5; row += 3) {
+    for (int col = 5; col < kW - 5; col += 3) {
+      RefWindow w;
+      PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
+      for (const Mat3& H : {Warp(0.3f, -0.4f), Warp(1.7f, 0.6f), Warp(-2.5f, 3.2f)}) {
+        for (const std::vector<float>* s : {&src, &same}) {
+          const float general = NccCost(View(ref), View(*s), H, col, row, kUniform);
+          EXPECT_NEAR(WindowNccCost(w, View(ref), View(*s), H, kUniform), general, 2e-4f)
+              << col << "," << row;
+          SourceSums sums;
+          fast += WindowSums(w, View(*s), H, &sums);
+        }
+      }
+    }
+  }
+  EXPECT_GT(fast, 100);  // most windows took the fast path
+}
+
+TEST(RefWindow, ScalarAndVectorSumsAgree) {
+  const std::vector<float> ref = Noise(5);
+  const std::vector<float> src = Noise(6);
+  RefWindow w;
+  PrepareRefWindow(View(ref), 24, 18, 5, 2, 0, &w);
+  SourceSums scalar, vector;
+  ASSERT_TRUE(WindowSumsScalar(w, View(src), Warp(0.3f, 0.2f), &scalar));
+  ASSERT_TRUE(WindowSums(w, View(src), Warp(0.3f, 0.2f), &vector));
+  EXPECT_NEAR(scalar.s, vector.s, 1e-4f);
+  EXPECT_NEAR(scalar.ss, vector.ss, 1e-4f);
+  EXPECT_NEAR(scalar.rs, vector.rs, 1e-5f);
+}
+
+TEST(RefWindow, SampleOutsideTheSourceRefusesTheFastPath) {
+  const std::vector<float> img = Noise(3);
+  RefWindow w;
+  PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
+  SourceSums sums;
+  const Mat3 near_right_edge = {{1, 0, kW - 1.0f - 25.5f, 0, 1, 0, 0, 0, 1}};  // last column at 46.5
+  EXPECT_TRUE(WindowSumsScalar(w, View(img), near_right_edge, &sums));
+  const Mat3 on_right_edge = {{1, 0, kW - 1.0f - 25.0f, 0, 1, 0, 0, 0, 1}};  // last column at 47
+  EXPECT_FALSE(WindowSumsScalar(w, View(img), on_right_edge, &sums));
+  EXPECT_FALSE(WindowSums(w, View(img), on_right_edge, &sums));
+  const Mat3 behind = {{1, 0, 0, 0, 1, 0, 0, 0, -1}};
+  EXPECT_FALSE(WindowSums(w, View(img), behind, &sums));
+}
+
+TEST(RefWindow, FlatReferenceCostsMax) {
+  const std::vector<float> flat(kW * kH, 0.5f);
+  const std::vector<float> src = Noise(4);
+  RefWindow w;
+  PrepareRefWindow(View(flat), 20, 15, 5, 2, 0, &w);
+  EXPECT_EQ(w.textured, 0);
+  EXPECT_EQ(WindowNccCost(w, View(flat), View(src), Warp(0.3f, 0.2f), kUniform), kMaxCost);
+}
+
+}  // namespace
+}  // namespace core
+}  // namespace msp

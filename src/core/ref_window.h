@@ -124,8 +124,10 @@ inline float HorizontalSum(__m256 v) {
   return _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, 1)));
 }
 
-// WindowSumsScalar, eight samples at a time: the four bilinear taps are
-// gathered, and padding lanes are masked out of the source sums.
+// WindowSumsScalar, eight samples at a time. The two taps of a bilinear row
+// are adjacent, so each row is one 64-bit gather of four samples' pairs; the
+// index lanes are pre-ordered so that de-interleaving the pairs puts samples
+// back in lane order. Padding lanes are masked out of the source sums.
 inline bool WindowSumsAvx2(const RefWindow& w, const ImageView& src, const Mat3& H,
                            SourceSums* out) {
   const __m256 h0 = _mm256_set1_ps(H.m[0]), h1 = _mm256_set1_ps(H.m[1]);
@@ -135,12 +137,11 @@ inline bool WindowSumsAvx2(const RefWindow& w, const ImageView& src, const Mat3&
   const __m256 h8 = _mm256_set1_ps(H.m[8]);
   const __m256i pitch = _mm256_set1_epi32(src.pitch);
   const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  const __m256i pair_order = _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
   const __m256 zero = _mm256_setzero_ps();
   const __m256 max_u = _mm256_set1_ps(src.width - 1.0f), max_v = _mm256_set1_ps(src.height - 1.0f);
-  const float* row0 = src.data;
-  const float* row0_right = src.data + 1;
-  const float* row1 = src.data + src.pitch;
-  const float* row1_right = src.data + src.pitch + 1;
+  const double* row0 = reinterpret_cast<const double*>(src.data);
+  const double* row1 = reinterpret_cast<const double*>(src.data + src.pitch);
   __m256 sum_s = _mm256_setzero_ps(), sum_ss = _mm256_setzero_ps(), sum_rs = _mm256_setzero_ps();
   for (int k = 0; k < w.num_samples; k += kWindowLanes) {
     const __m256 x = _mm256_loadu_ps(w.x + k), y = _mm256_loadu_ps(w.y + k);
@@ -158,11 +159,18 @@ inline bool WindowSumsAvx2(const RefWindow& w, const ImageView& src, const Mat3&
     const __m256i c0 = _mm256_cvttps_epi32(u), r0 = _mm256_cvttps_epi32(v);
     const __m256 fx = _mm256_sub_ps(u, _mm256_cvtepi32_ps(c0));
     const __m256 fy = _mm256_sub_ps(v, _mm256_cvtepi32_ps(r0));
-    const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(r0, pitch), c0);
-    const __m256 p00 = _mm256_i32gather_ps(row0, index, 4);
-    const __m256 p01 = _mm256_i32gather_ps(row0_right, index, 4);
-    const __m256 p10 = _mm256_i32gather_ps(row1, index, 4);
-    const __m256 p11 = _mm256_i32gather_ps(row1_right, index, 4);
+    const __m256i index =
+        _mm256_permutevar8x32_epi32(_mm256_add_epi32(_mm256_mullo_epi32(r0, pitch), c0), pair_order);
+    const __m128i low = _mm256_castsi256_si128(index), high = _mm256_extracti128_si256(index, 1);
+    // Scale 4: the indices count floats; each gathered double is a tap pair.
+    const __m256 top_low = _mm256_castpd_ps(_mm256_i32gather_pd(row0, low, 4));
+    const __m256 top_high = _mm256_castpd_ps(_mm256_i32gather_pd(row0, high, 4));
+    const __m256 bottom_low = _mm256_castpd_ps(_mm256_i32gather_pd(row1, low, 4));
+    const __m256 bottom_high = _mm256_castpd_ps(_mm256_i32gather_pd(row1, high, 4));
+    const __m256 p00 = _mm256_shuffle_ps(top_low, top_high, _MM_SHUFFLE(2, 0, 2, 0));
+    const __m256 p01 = _mm256_shuffle_ps(top_low, top_high, _MM_SHUFFLE(3, 1, 3, 1));
+    const __m256 p10 = _mm256_shuffle_ps(bottom_low, bottom_high, _MM_SHUFFLE(2, 0, 2, 0));
+    const __m256 p11 = _mm256_shuffle_ps(bottom_low, bottom_high, _MM_SHUFFLE(3, 1, 3, 1));
     const __m256 top = _mm256_fmadd_ps(fx, _mm256_sub_ps(p01, p00), p00);
     const __m256 bottom = _mm256_fmadd_ps(fx, _mm256_sub_ps(p11, p10), p10);
     __m256 s = _mm256_fmadd_ps(fy, _mm256_sub_ps(bottom, top), top);

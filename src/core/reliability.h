@@ -75,46 +75,132 @@ MSP_HD uint8_t ClassifyCostCurve(const float* curve, int n, const ReliabilityPar
   return second - curve[lowest] > params.min_spread ? kReliable : kUnreliable;
 }
 
-// Samples the curve of pixel (col, row): its normal fixed, depths at disparity
+// ClassifyCostCurve over a curve whose samples are computed on demand (each
+// at most once) by `sampler.At(i)`. It decides with the same answer, but most
+// unreliable pixels need only the central samples: the pixel can only be
+// reliable when the lowest minimum within `radius` of the centre is low
+// enough, and the outer samples are then scanned only until a minimum there
+// beats it or comes within `min_spread` of it.
+template <typename Sampler>
+class LazyCostCurve {
+ public:
+  MSP_HD LazyCostCurve(Sampler* sampler, int n) : sampler_(sampler), n_(n) {
+    for (int i = 0; i < n; ++i) known_[i] = false;
+  }
+  MSP_HD float At(int i) {
+    if (!known_[i]) {
+      value_[i] = sampler_->At(i);
+      known_[i] = true;
+    }
+    return value_[i];
+  }
+  // IsStrictLocalMinimum on the lazily sampled curve.
+  MSP_HD bool IsMinimum(int i) {
+    if (n_ < 2) return false;
+    const bool below_left = i == 0 || At(i) < At(i - 1);
+    return below_left && (i == n_ - 1 || At(i) < At(i + 1));
+  }
+  MSP_HD int size() const { return n_; }
+
+ private:
+  Sampler* sampler_;
+  int n_;
+  float value_[kCurveSamples];
+  bool known_[kCurveSamples];
+};
+
+template <typename Sampler>
+MSP_HD uint8_t ClassifyCostCurveLazily(LazyCostCurve<Sampler>& curve,
+                                       const ReliabilityParams& params) {
+  const int n = curve.size(), centre = n / 2;
+  const int lo = centre - params.radius < 0 ? 0 : centre - params.radius;
+  const int hi = centre + params.radius > n - 1 ? n - 1 : centre + params.radius;
+  int lowest = -1, num_minima = 0;
+  for (int i = lo; i <= hi; ++i) {
+    if (!curve.IsMinimum(i)) continue;
+    ++num_minima;
+    if (lowest < 0 || curve.At(i) < curve.At(lowest)) lowest = i;
+  }
+  // No central minimum, or too high a one: the lowest minimum of the whole
+  // curve is either outside the radius or this one, unreliable either way.
+  if (lowest < 0) return kUnreliable;
+  const float best = curve.At(lowest);
+  if (best > params.max_minimum_cost) return kUnreliable;
+  float second = 1e30f;
+  for (int i = lo; i <= hi; ++i) {
+    if (i != lowest && curve.IsMinimum(i) && curve.At(i) < second) second = curve.At(i);
+  }
+  for (int step = 0; step < n - (hi - lo + 1); ++step) {
+    // Right of the central range first, then left of it.
+    const int i = hi + 1 + step < n ? hi + 1 + step : lo - 1 - (step - (n - 1 - hi));
+    if (!curve.IsMinimum(i)) continue;
+    ++num_minima;
+    const float v = curve.At(i);
+    // Lower (or as low and further left): the lowest minimum is outside.
+    if (v < best || (v == best && i < lowest)) return kUnreliable;
+    if (v - best <= params.min_spread) return kUnreliable;  // second - best can only shrink
+    if (v < second) second = v;
+  }
+  if (num_minima == 1) return best <= params.single_min_cost ? kReliable : kUnreliable;
+  return second - best > params.min_spread ? kReliable : kUnreliable;
+}
+
+// The cost curve of pixel (col, row): its normal fixed, depths at disparity
 // offsets -kCurveHalfWidth..kCurveHalfWidth px (b = mean baseline to the
 // selected views), each scored with uniform weights over the view mask.
 // `p` should be photometric (geometric = 0): the thresholds are NCC costs.
-// Writes kCurveSamples costs to `curve` and returns false when the pixel is
-// "unknown": window over the border, no depth, or no selected view.
-MSP_HD bool SampleCostCurve(const PassParams& p, int col, int row, float* curve) {
-  const PixelStateView& s = p.state;
-  const int r = p.ncc.window_radius;
-  if (col < r || row < r || col + r >= s.width || row + r >= s.height) return false;
-  const int i = s.Index(col, row);
-  const PlaneHypothesis cur = s.Get(i);
-  const uint32_t mask = s.mask[i];
-  if (!(cur.depth > 0.0f) || mask == 0u) return false;
-  const float fb = p.ref_camera.fx * MeanBaseline(p, mask);
-  if (!(fb > 0.0f)) return false;
-  float weights[kMaxSourceViews];
-  float costs[kMaxSourceViews];
-  MaskWeights(p, mask, weights);
-  RefWindow w;
-  PrepareWindow(p, col, row, &w);
-  for (int k = 0; k < kCurveSamples; ++k) {
-    PlaneHypothesis h = cur;
-    h.depth = DepthAtDisparityOffset(fb, cur.depth, static_cast<float>(k - kCurveHalfWidth));
-    if (!DepthInRange(p, h.depth)) {
-      curve[k] = kMaxCost;
-      continue;
-    }
-    ViewCosts(p, w, h, weights, costs);
-    curve[k] = AggregateCost(costs, weights, p.num_src);
+class CostCurveSampler {
+ public:
+  // False when the pixel is "unknown": window over the border, no depth, or
+  // no selected view.
+  MSP_HD bool Prepare(const PassParams& p, int col, int row) {
+    p_ = &p;
+    const PixelStateView& s = p.state;
+    const int r = p.ncc.window_radius;
+    if (col < r || row < r || col + r >= s.width || row + r >= s.height) return false;
+    const int i = s.Index(col, row);
+    current_ = s.Get(i);
+    const uint32_t mask = s.mask[i];
+    if (!(current_.depth > 0.0f) || mask == 0u) return false;
+    focal_baseline_ = p.ref_camera.fx * MeanBaseline(p, mask);
+    if (!(focal_baseline_ > 0.0f)) return false;
+    MaskWeights(p, mask, weights_);
+    PrepareWindow(p, col, row, &window_);
+    return true;
   }
+  MSP_HD float At(int k) const {
+    PlaneHypothesis h = current_;
+    h.depth = DepthAtDisparityOffset(focal_baseline_, current_.depth,
+                                     static_cast<float>(k - kCurveHalfWidth));
+    if (!DepthInRange(*p_, h.depth)) return kMaxCost;
+    float costs[kMaxSourceViews];
+    ViewCosts(*p_, window_, h, weights_, costs);
+    return AggregateCost(costs, weights_, p_->num_src);
+  }
+
+ private:
+  const PassParams* p_ = nullptr;
+  PlaneHypothesis current_;
+  float focal_baseline_ = 0.0f;
+  float weights_[kMaxSourceViews];
+  RefWindow window_;
+};
+
+// Writes the whole curve (kCurveSamples costs); false when the pixel is unknown.
+MSP_HD bool SampleCostCurve(const PassParams& p, int col, int row, float* curve) {
+  CostCurveSampler sampler;
+  if (!sampler.Prepare(p, col, row)) return false;
+  for (int k = 0; k < kCurveSamples; ++k) curve[k] = sampler.At(k);
   return true;
 }
 
 // kReliable / kUnreliable / kUnknown for pixel (col, row) after a pass.
 MSP_HD uint8_t ClassifyPixel(const PassParams& p, int col, int row,
                              const ReliabilityParams& params) {
-  float curve[kCurveSamples];
-  if (!SampleCostCurve(p, col, row, curve)) return kUnknown;
-  return ClassifyCostCurve(curve, kCurveSamples, params);
+  CostCurveSampler sampler;
+  if (!sampler.Prepare(p, col, row)) return kUnknown;
+  LazyCostCurve<CostCurveSampler> curve(&sampler, kCurveSamples);
+  return ClassifyCostCurveLazily(curve, params);
 }
 
 }  // namespace core

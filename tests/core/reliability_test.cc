@@ -112,3 +112,72 @@ TEST(Reliability, BorderNoDepthOrNoViewIsUnknown) {
 }  // namespace
 }  // namespace core
 }  // namespace msp
+
+namespace msp {
+namespace core {
+namespace {
+
+// Serves a stored curve and counts the samples asked for.
+struct CountingSampler {
+  const std::vector<float>* curve;
+  int calls = 0;
+  float At(int i) {
+    ++calls;
+    return (*curve)[i];
+  }
+};
+
+uint8_t ClassifyLazily(const std::vector<float>& c, const ReliabilityParams& params, int* calls) {
+  CountingSampler sampler{&c};
+  LazyCostCurve<CountingSampler> curve(&sampler, static_cast<int>(c.size()));
+  const uint8_t result = ClassifyCostCurveLazily(curve, params);
+  *calls = sampler.calls;
+  return result;
+}
+
+TEST(Reliability, LazyClassificationAgreesWithTheWholeCurve) {
+  // Random curves of coarse values (so ties and plateaus happen); every other
+  // one lies higher with a deep minimum planted near the centre, under every
+  // pass's radius.
+  int reliable = 0, unreliable = 0;
+  for (uint64_t trial = 0; trial < 4000; ++trial) {
+    std::vector<float> c(kCurveSamples);
+    const bool planted = trial % 2 == 0;
+    for (int i = 0; i < kCurveSamples; ++i) {
+      c[i] = (planted ? 0.5f : 0.0f) + 0.05f * std::floor(20.0f * RandomUniform(Mix64(trial), i));
+    }
+    if (planted) {
+      const int at = kCentre - 3 + static_cast<int>(trial / 2 % 7);
+      c[at] = 0.05f * static_cast<float>(trial / 14 % 4);
+    }
+    for (int pass = 0; pass < 4; ++pass) {
+      const ReliabilityParams params = DefaultReliabilityParams(pass);
+      int calls = 0;
+      const uint8_t lazy = ClassifyLazily(c, params, &calls);
+      ASSERT_EQ(lazy, ClassifyCostCurve(c.data(), kCurveSamples, params)) << trial << " " << pass;
+      ASSERT_LE(calls, kCurveSamples);
+      reliable += lazy == kReliable;
+      unreliable += lazy == kUnreliable;
+    }
+  }
+  EXPECT_GT(reliable, 100);  // both outcomes were exercised
+  EXPECT_GT(unreliable, 100);
+}
+
+TEST(Reliability, LazyClassificationStopsEarlyOnFlatOrDistantMinima) {
+  int calls = 0;
+  const std::vector<float> flat(kCurveSamples, 0.9f);
+  EXPECT_EQ(ClassifyLazily(flat, DefaultReliabilityParams(2), &calls), kUnreliable);
+  EXPECT_LE(calls, 2 * 2 + 3);  // at most the central range and a sample either side
+  EXPECT_EQ(ClassifyLazily(VCurve(kCentre + 20, 0.05f, kSlope), DefaultReliabilityParams(0), &calls),
+            kUnreliable);
+  EXPECT_LE(calls, 2 * 6 + 3);
+  // A reliable pixel needs the whole curve to rule out competitors.
+  EXPECT_EQ(ClassifyLazily(VCurve(kCentre, 0.05f, kSlope), DefaultReliabilityParams(0), &calls),
+            kReliable);
+  EXPECT_EQ(calls, kCurveSamples);
+}
+
+}  // namespace
+}  // namespace core
+}  // namespace msp

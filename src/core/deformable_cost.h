@@ -5,6 +5,7 @@
 // of the same surface while keeping p's hypothesis.
 #pragma once
 
+#include "core/anchor_windows.h"
 #include "core/anchors.h"
 #include "core/hd.h"
 #include "core/patch_match_kernel.h"
@@ -43,19 +44,15 @@ MSP_HD NccParams AnchorNccParams(const NccParams& ncc, const DeformableParams& d
 // anchor, prepared once per pixel update (ref_window.h).
 struct DeformableWindows {
   RefWindow centre;
-  RefWindow anchor[kMaxAnchors];
-  int num_anchors;
+  AnchorWindows anchors;
 };
 
 MSP_HD void PrepareDeformableWindows(const PassParams& p, int col, int row,
                                      const AnchorSet& anchors, const DeformableParams& d,
                                      DeformableWindows* w) {
   PrepareWindow(p, col, row, &w->centre);
-  w->num_anchors = anchors.count < kMaxAnchors ? anchors.count : kMaxAnchors;
-  for (int k = 0; k < w->num_anchors; ++k) {
-    PrepareRefWindow(p.ref_image, anchors.cols[k], anchors.rows[k], d.anchor_window_radius,
-                     d.anchor_window_step, 0, &w->anchor[k]);
-  }
+  PrepareAnchorWindows(p.ref_image, anchors.cols, anchors.rows, anchors.count,
+                       d.anchor_window_radius, d.anchor_window_step, &w->anchors);
 }
 
 // Deformable cost of a prepared hypothesis at the centre pixel in source
@@ -66,15 +63,12 @@ MSP_HD float DeformableViewCost(const PassParams& p, const DeformableWindows& w,
   const SourceView& s = p.src[j];
   const Mat3 H = WarpHomography(s.rel, plane.warp);
   float cost = WindowNccCost(w.centre, p.ref_image, s.image, H, p.ncc);
-  if (w.num_anchors > 0) {
-    const NccParams anchor_ncc = AnchorNccParams(p.ncc, d);
-    float sum = 0.0f;
-    for (int k = 0; k < w.num_anchors; ++k) {
-      // H maps every reference pixel on p's plane: the anchor window is the
-      // part of p's (deformed) patch that lies around s.
-      sum += WindowNccCost(w.anchor[k], p.ref_image, s.image, H, anchor_ncc);
-    }
-    cost = d.lambda * cost + (1.0f - d.lambda) * (sum / w.num_anchors);
+  if (w.anchors.count > 0) {
+    // H maps every reference pixel on p's plane: an anchor window is the
+    // part of p's (deformed) patch that lies around the anchor.
+    const float sum =
+        AnchorCostSum(w.anchors, p.ref_image, s.image, H, AnchorNccParams(p.ncc, d));
+    cost = d.lambda * cost + (1.0f - d.lambda) * (sum / w.anchors.count);
   }
   return cost + GeometricTerm(p, j, w.centre.col, w.centre.row, plane.point);
 }

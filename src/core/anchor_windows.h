@@ -1,0 +1,200 @@
+// The anchor windows of a deformable patch (paper eq. 3), prepared once per
+// pixel update like RefWindow but laid out sample-major: entry [k][a] is
+// sample k of anchor a. Scoring a hypothesis then warps sample k of all 8
+// anchors in one vector, so the small 3x3 windows fill whole vectors and
+// every anchor's NCC comes out of the same three sum vectors.
+#pragma once
+
+#include "core/deformable_limits.h"
+#include "core/hd.h"
+#include "core/image_view.h"
+#include "core/ncc.h"
+#include "core/ref_window.h"
+#include "core/vec.h"
+
+namespace msp {
+namespace core {
+
+// 3x3 samples at APD's step; up to 5x5 fit, larger anchor windows take the
+// general path.
+constexpr int kMaxAnchorWindowSamples = 25;
+
+struct AnchorWindows {
+  int count;        // anchors (lanes) in use
+  int num_samples;  // per anchor window
+  int radius;
+  uint32_t fast;      // bit a: anchor a's window lies inside the reference
+  uint32_t textured;  // bit a: its reference variance reaches kMinNccVariance
+  int col[kMaxAnchors];
+  int row[kMaxAnchors];
+  // Lanes without a fast window (no anchor, or over the reference border)
+  // sample pixel (0, 0) with value 0; their sums are ignored.
+  float x[kMaxAnchorWindowSamples][kMaxAnchors];
+  float y[kMaxAnchorWindowSamples][kMaxAnchors];
+  float value[kMaxAnchorWindowSamples][kMaxAnchors];
+};
+
+MSP_HD void PrepareAnchorWindows(const ImageView& ref, const int* cols, const int* rows, int count,
+                                 int radius, int step, AnchorWindows* w) {
+  w->count = count < kMaxAnchors ? count : kMaxAnchors;
+  w->radius = radius;
+  w->fast = 0u;
+  w->textured = 0u;
+  const int per_side = 2 * radius / step + 1;
+  w->num_samples = per_side * per_side <= kMaxAnchorWindowSamples ? per_side * per_side : 0;
+  for (int a = 0; a < kMaxAnchors; ++a) {
+    const bool used = a < w->count;
+    w->col[a] = used ? cols[a] : 0;
+    w->row[a] = used ? rows[a] : 0;
+    const bool inside = used && w->num_samples > 0 && cols[a] - radius >= 0 &&
+                        rows[a] - radius >= 0 && cols[a] + radius < ref.width &&
+                        rows[a] + radius < ref.height;
+    float sum = 0.0f;
+    int k = 0;
+    for (int oy = -radius; oy <= radius && w->num_samples > 0; oy += step) {
+      for (int ox = -radius; ox <= radius; ox += step, ++k) {
+        w->x[k][a] = inside ? static_cast<float>(cols[a] + ox) : 0.0f;
+        w->y[k][a] = inside ? static_cast<float>(rows[a] + oy) : 0.0f;
+        w->value[k][a] = inside ? ref.At(cols[a] + ox, rows[a] + oy) : 0.0f;
+        sum += w->value[k][a];
+      }
+    }
+    if (!inside) continue;
+    const float mean = sum / w->num_samples;
+    float sum_sq = 0.0f;
+    for (k = 0; k < w->num_samples; ++k) {
+      w->value[k][a] -= mean;
+      sum_sq += w->value[k][a] * w->value[k][a];
+    }
+    w->fast |= 1u << a;
+    const bool textured = sum_sq / w->num_samples >= kMinNccVariance;
+    if (textured) w->textured |= 1u << a;
+    const float inv_norm = textured ? 1.0f / sqrtf(sum_sq) : 0.0f;
+    for (k = 0; k < w->num_samples; ++k) w->value[k][a] *= inv_norm;
+  }
+}
+
+// Per-anchor source sums, and which anchors' windows were wholly inside the
+// source (the others take the general NccCost).
+struct AnchorSums {
+  float s[kMaxAnchors], ss[kMaxAnchors], rs[kMaxAnchors];
+  uint32_t inside;
+};
+
+MSP_HD void AnchorSumsScalar(const AnchorWindows& w, const ImageView& src, const Mat3& H,
+                             AnchorSums* out) {
+  out->inside = 0u;
+  const float max_u = src.width - 1.0f, max_v = src.height - 1.0f;
+  for (int a = 0; a < kMaxAnchors; ++a) {
+    out->s[a] = out->ss[a] = out->rs[a] = 0.0f;
+    if (!((w.fast >> a) & 1u)) continue;
+    bool inside = true;
+    for (int k = 0; k < w.num_samples; ++k) {
+      const float x = w.x[k][a], y = w.y[k][a];
+      const float h2 = H.m[6] * x + H.m[7] * y + H.m[8];
+      const float inv = 1.0f / h2;
+      const float u = (H.m[0] * x + H.m[1] * y + H.m[2]) * inv;
+      const float v = (H.m[3] * x + H.m[4] * y + H.m[5]) * inv;
+      inside = h2 > 0.0f && u >= 0.0f && v >= 0.0f && u < max_u && v < max_v;
+      if (!inside) break;
+      const int c0 = static_cast<int>(u), r0 = static_cast<int>(v);
+      const float fx = u - c0, fy = v - r0;
+      const float* p0 = src.data + r0 * src.pitch + c0;
+      const float* p1 = p0 + src.pitch;
+      const float top = p0[0] + fx * (p0[1] - p0[0]);
+      const float bottom = p1[0] + fx * (p1[1] - p1[0]);
+      const float s = top + fy * (bottom - top);
+      out->s[a] += s;
+      out->ss[a] += s * s;
+      out->rs[a] += w.value[k][a] * s;
+    }
+    if (inside) out->inside |= 1u << a;
+  }
+}
+
+#if defined(MSP_WINDOW_SUMS_AVX2)
+static_assert(kMaxAnchors == kWindowLanes, "one vector lane per anchor");
+
+// AnchorSumsScalar with sample k of the 8 anchors in one vector. A lane whose
+// sample leaves the source reads pixel 0 instead and is dropped at the end.
+inline void AnchorSumsAvx2(const AnchorWindows& w, const ImageView& src, const Mat3& H,
+                           AnchorSums* out) {
+  const __m256 h0 = _mm256_set1_ps(H.m[0]), h1 = _mm256_set1_ps(H.m[1]);
+  const __m256 h2 = _mm256_set1_ps(H.m[2]), h3 = _mm256_set1_ps(H.m[3]);
+  const __m256 h4 = _mm256_set1_ps(H.m[4]), h5 = _mm256_set1_ps(H.m[5]);
+  const __m256 h6 = _mm256_set1_ps(H.m[6]), h7 = _mm256_set1_ps(H.m[7]);
+  const __m256 h8 = _mm256_set1_ps(H.m[8]);
+  const __m256i pitch = _mm256_set1_epi32(src.pitch);
+  const __m256 zero = _mm256_setzero_ps();
+  const __m256 max_u = _mm256_set1_ps(src.width - 1.0f), max_v = _mm256_set1_ps(src.height - 1.0f);
+  const __m256i lane_bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+  __m256 ok = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
+      _mm256_and_si256(_mm256_set1_epi32(static_cast<int>(w.fast)), lane_bit), lane_bit));
+  __m256 sum_s = zero, sum_ss = zero, sum_rs = zero;
+  for (int k = 0; k < w.num_samples; ++k) {
+    const __m256 x = _mm256_loadu_ps(w.x[k]), y = _mm256_loadu_ps(w.y[k]);
+    const __m256 hw = _mm256_fmadd_ps(h6, x, _mm256_fmadd_ps(h7, y, h8));
+    const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), hw);
+    const __m256 u = _mm256_mul_ps(_mm256_fmadd_ps(h0, x, _mm256_fmadd_ps(h1, y, h2)), inv);
+    const __m256 v = _mm256_mul_ps(_mm256_fmadd_ps(h3, x, _mm256_fmadd_ps(h4, y, h5)), inv);
+    const __m256 inside = _mm256_and_ps(
+        _mm256_and_ps(_mm256_cmp_ps(hw, zero, _CMP_GT_OQ), _mm256_cmp_ps(u, zero, _CMP_GE_OQ)),
+        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(v, zero, _CMP_GE_OQ),
+                                    _mm256_cmp_ps(u, max_u, _CMP_LT_OQ)),
+                      _mm256_cmp_ps(v, max_v, _CMP_LT_OQ)));
+    ok = _mm256_and_ps(ok, inside);
+    // Out-of-range or NaN coordinates convert to garbage: zero those indices.
+    const __m256i c0 = _mm256_cvttps_epi32(_mm256_and_ps(u, inside));
+    const __m256i r0 = _mm256_cvttps_epi32(_mm256_and_ps(v, inside));
+    const __m256 fx = _mm256_sub_ps(_mm256_and_ps(u, inside), _mm256_cvtepi32_ps(c0));
+    const __m256 fy = _mm256_sub_ps(_mm256_and_ps(v, inside), _mm256_cvtepi32_ps(r0));
+    const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(r0, pitch), c0);
+    const __m256 p00 = _mm256_i32gather_ps(src.data, index, 4);
+    const __m256 p01 = _mm256_i32gather_ps(src.data + 1, index, 4);
+    const __m256 p10 = _mm256_i32gather_ps(src.data + src.pitch, index, 4);
+    const __m256 p11 = _mm256_i32gather_ps(src.data + src.pitch + 1, index, 4);
+    const __m256 top = _mm256_fmadd_ps(fx, _mm256_sub_ps(p01, p00), p00);
+    const __m256 bottom = _mm256_fmadd_ps(fx, _mm256_sub_ps(p11, p10), p10);
+    const __m256 s = _mm256_fmadd_ps(fy, _mm256_sub_ps(bottom, top), top);
+    sum_s = _mm256_add_ps(sum_s, s);
+    sum_ss = _mm256_fmadd_ps(s, s, sum_ss);
+    sum_rs = _mm256_fmadd_ps(_mm256_loadu_ps(w.value[k]), s, sum_rs);
+  }
+  _mm256_storeu_ps(out->s, sum_s);
+  _mm256_storeu_ps(out->ss, sum_ss);
+  _mm256_storeu_ps(out->rs, sum_rs);
+  out->inside = static_cast<uint32_t>(_mm256_movemask_ps(ok));
+}
+#endif
+
+MSP_HD void AnchorSumsOf(const AnchorWindows& w, const ImageView& src, const Mat3& H,
+                         AnchorSums* out) {
+#if defined(MSP_WINDOW_SUMS_AVX2)
+  AnchorSumsAvx2(w, src, H, out);
+#else
+  AnchorSumsScalar(w, src, H, out);
+#endif
+}
+
+// Sum over the anchors of 1 - NCC of each anchor window under H; `anchor_ncc`
+// (uniform weights, the anchor window's radius and step) serves the windows
+// that take the general path.
+MSP_HD float AnchorCostSum(const AnchorWindows& w, const ImageView& ref, const ImageView& src,
+                           const Mat3& H, const NccParams& anchor_ncc) {
+  AnchorSums sums;
+  AnchorSumsOf(w, src, H, &sums);
+  float total = 0.0f;
+  for (int a = 0; a < w.count; ++a) {
+    if (!((sums.inside >> a) & 1u)) {
+      total += NccCost(ref, src, H, w.col[a], w.row[a], anchor_ncc);
+    } else if (!((w.textured >> a) & 1u)) {
+      total += kMaxCost;
+    } else {
+      total += NccFromSourceSums(SourceSums{sums.s[a], sums.ss[a], sums.rs[a]}, w.num_samples);
+    }
+  }
+  return total;
+}
+
+}  // namespace core
+}  // namespace msp

@@ -1,0 +1,80 @@
+#include "core/anchor_windows.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "core/rng.h"
+
+namespace msp {
+namespace core {
+namespace {
+
+constexpr int kW = 64, kH = 48;
+const NccParams kAnchorNcc{5, 5, 0, 5.0f, 0.2f};  // APD's 3x3 anchor windows
+
+std::vector<float> Noise(uint64_t seed) {
+  std::vector<float> img(kW * kH);
+  for (int i = 0; i < kW * kH; ++i) img[i] = RandomUniform(Mix64(seed), i);
+  return img;
+}
+
+ImageView View(const std::vector<float>& img) { return ImageView{img.data(), kW, kH, kW}; }
+
+Mat3 Warp(float shift_x, float shift_y) {
+  return Mat3{{1.02f, 0.01f, shift_x, -0.01f, 0.99f, shift_y, 1e-4f, 5e-5f, 1.0f}};
+}
+
+// Anchors inside, over the reference border, and near the right edge where
+// a shifted warp leaves the source.
+const int kCols[kMaxAnchors] = {20, 30, 2, 40, 57, 12, 33, 50};
+const int kRows[kMaxAnchors] = {20, 25, 20, 40, 10, 8, 30, 44};
+
+TEST(AnchorWindows, CostSumEqualsTheGeneralCostOfEachAnchor) {
+  const std::vector<float> ref = Noise(1), src = Noise(2);
+  for (int count : {8, 5, 1}) {
+    AnchorWindows w;
+    PrepareAnchorWindows(View(ref), kCols, kRows, count, 5, 5, &w);
+    EXPECT_EQ(w.num_samples, 9);
+    EXPECT_EQ((w.fast >> 2) & 1u, 0u);  // anchor 2 is 2 px from the border
+    for (const Mat3& H : {Warp(0.4f, 0.3f), Warp(2.5f, -1.5f), Warp(-3.0f, 2.0f)}) {
+      for (const std::vector<float>* s : {&src, &ref}) {
+        float expected = 0.0f;
+        for (int a = 0; a < count; ++a) {
+          expected += NccCost(View(ref), View(*s), H, kCols[a], kRows[a], kAnchorNcc);
+        }
+        EXPECT_NEAR(AnchorCostSum(w, View(ref), View(*s), H, kAnchorNcc), expected, 1e-4f);
+      }
+    }
+  }
+}
+
+TEST(AnchorWindows, ScalarAndVectorSumsAgree) {
+  const std::vector<float> ref = Noise(3), src = Noise(4);
+  AnchorWindows w;
+  PrepareAnchorWindows(View(ref), kCols, kRows, kMaxAnchors, 5, 5, &w);
+  AnchorSums scalar, vector;
+  AnchorSumsScalar(w, View(src), Warp(2.5f, -1.5f), &scalar);
+  AnchorSumsOf(w, View(src), Warp(2.5f, -1.5f), &vector);
+  EXPECT_EQ(scalar.inside, vector.inside);
+  EXPECT_NE(scalar.inside, 0u);
+  EXPECT_NE(scalar.inside, 0xFFu);  // some windows left the source or the reference
+  for (int a = 0; a < kMaxAnchors; ++a) {
+    if (!((scalar.inside >> a) & 1u)) continue;
+    EXPECT_NEAR(scalar.s[a], vector.s[a], 1e-4f);
+    EXPECT_NEAR(scalar.ss[a], vector.ss[a], 1e-4f);
+    EXPECT_NEAR(scalar.rs[a], vector.rs[a], 1e-5f);
+  }
+}
+
+TEST(AnchorWindows, FlatAnchorWindowCostsMax) {
+  const std::vector<float> flat(kW * kH, 0.3f), src = Noise(4);
+  AnchorWindows w;
+  PrepareAnchorWindows(View(flat), kCols, kRows, 1, 5, 5, &w);
+  EXPECT_EQ(w.textured, 0u);
+  EXPECT_EQ(AnchorCostSum(w, View(flat), View(src), Warp(0.4f, 0.3f), kAnchorNcc), kMaxCost);
+}
+
+}  // namespace
+}  // namespace core
+}  // namespace msp

@@ -82,7 +82,7 @@ DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
       normal.channels == 3 && normal.width == depth.width && normal.height == depth.height;
   const bool has_mask = !textureless.empty() && textureless.cols == gt_depth.width &&
                         textureless.rows == gt_depth.height;
-  RegionAccumulator all, flat;
+  RegionAccumulator all, flat, textured;
   for (int row = 0; row < depth.height; ++row) {
     // Nearest ground-truth pixel: predicted index * (GT size / predicted size).
     const int gt_row = std::min(
@@ -108,8 +108,7 @@ DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
           angle = AngleDeg(n, g);
         }
       }
-      for (RegionAccumulator* acc : {&all, &flat}) {
-        if (acc == &flat && !in_flat) continue;
+      for (RegionAccumulator* acc : {&all, in_flat ? &flat : &textured}) {
         ++acc->num_gt;
         if (!valid) continue;
         ++acc->num_valid;
@@ -121,6 +120,7 @@ DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
   }
   out.all = all.Finish();
   out.textureless = flat.Finish();
+  out.textured = textured.Finish();
   return out;
 }
 
@@ -131,9 +131,11 @@ DepthMapMetrics AverageMetrics(const std::vector<DepthMapMetrics>& maps) {
   for (const DepthMapMetrics& m : maps) {
     AddRegion(&avg.all, m.all);
     AddRegion(&avg.textureless, m.textureless);
+    AddRegion(&avg.textured, m.textured);
   }
   DivideRegion(&avg.all, static_cast<double>(maps.size()));
   DivideRegion(&avg.textureless, static_cast<double>(maps.size()));
+  DivideRegion(&avg.textured, static_cast<double>(maps.size()));
   return avg;
 }
 

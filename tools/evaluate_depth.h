@@ -10,7 +10,8 @@
 namespace msp {
 namespace eval {
 
-// Figures over one set of pixels (the whole image or its textureless part).
+// Figures over one set of pixels (the whole image, its textureless part or
+// the rest).
 // "Complete" counts over all ground-truth pixels (missing predictions count
 // as failures); "accurate" counts over valid predictions only.
 struct RegionMetrics {
@@ -30,6 +31,7 @@ struct DepthMapMetrics {
   int height = 0;
   RegionMetrics all;
   RegionMetrics textureless;
+  RegionMetrics textured;  // the rest of the ground-truth pixels
 };
 
 // The prediction may be smaller than the ground truth (max_image_size): the

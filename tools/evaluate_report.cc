@@ -23,10 +23,21 @@ void PrintRow(std::ostream& out, const std::string& name, const RegionMetrics& m
   out << buf;
 }
 
-void PrintMapTable(const EvaluationResult& r, bool textureless, std::ostream& out) {
+// The pixels a map table covers.
+enum class Region { kAll, kTextureless, kTextured };
+
+const RegionMetrics& Select(const DepthMapMetrics& m, Region region) {
+  return region == Region::kAll ? m.all
+                                : (region == Region::kTextureless ? m.textureless : m.textured);
+}
+
+void PrintMapTable(const EvaluationResult& r, Region region, std::ostream& out) {
   const double* t = r.info.depth_relative_thresholds;
-  out << "\nDepth maps (" << r.input_type << "), "
-      << (textureless ? "textureless pixels only" : "all pixels") << ", thresholds " << 100.0 * t[0]
+  const char* what = region == Region::kAll
+                         ? "all pixels"
+                         : (region == Region::kTextureless ? "textureless pixels only"
+                                                           : "textured pixels only");
+  out << "\nDepth maps (" << r.input_type << "), " << what << ", thresholds " << 100.0 * t[0]
       << "% / " << 100.0 * t[1] << "% relative depth error\n";
   char header[256];
   std::snprintf(header, sizeof(header), "%-16s %7s %7s %7s %7s %7s %9s %8s\n", "image", "valid%",
@@ -37,9 +48,9 @@ void PrintMapTable(const EvaluationResult& r, bool textureless, std::ostream& ou
       out << std::left << std::setw(16) << m.name << " (missing)\n" << std::right;
       continue;
     }
-    PrintRow(out, m.name, textureless ? m.textureless : m.all);
+    PrintRow(out, m.name, Select(m, region));
   }
-  PrintRow(out, "average", textureless ? r.average.textureless : r.average.all);
+  PrintRow(out, "average", Select(r.average, region));
 }
 
 void JsonRegion(std::ostringstream& s, const RegionMetrics& m) {
@@ -56,6 +67,8 @@ void JsonMap(std::ostringstream& s, const DepthMapMetrics& m) {
   JsonRegion(s, m.all);
   s << ", \"textureless\": ";
   JsonRegion(s, m.textureless);
+  s << ", \"textured\": ";
+  JsonRegion(s, m.textured);
   s << "}";
 }
 
@@ -68,8 +81,9 @@ void PrintReport(const EvaluationResult& r, std::ostream& out) {
   if (!r.maps.empty()) {
     out << "cmpK = within threshold K over all ground-truth pixels; accK = over valid "
            "predictions\n";
-    PrintMapTable(r, false, out);
-    PrintMapTable(r, true, out);
+    PrintMapTable(r, Region::kAll, out);
+    PrintMapTable(r, Region::kTextureless, out);
+    PrintMapTable(r, Region::kTextured, out);
     if (r.num_missing_maps > 0) out << r.num_missing_maps << " map(s) missing\n";
   }
   if (r.has_cloud) {

@@ -33,7 +33,8 @@ TEST(EvaluateDepthMap, GroundTruthAgainstItselfIsPerfect) {
       EvaluateDepthMap(gt.depth, gt.normal, gt.depth, gt.normal, gt.mask, kThresholds);
   EXPECT_EQ(m.all.num_gt, 48);
   EXPECT_EQ(m.textureless.num_gt, 24);
-  for (const RegionMetrics* r : {&m.all, &m.textureless}) {
+  EXPECT_EQ(m.textured.num_gt, 24);
+  for (const RegionMetrics* r : {&m.all, &m.textureless, &m.textured}) {
     EXPECT_DOUBLE_EQ(r->valid_fraction, 1.0);
     EXPECT_DOUBLE_EQ(r->complete[0], 1.0);
     EXPECT_DOUBLE_EQ(r->accurate[1], 1.0);
@@ -77,6 +78,8 @@ TEST(EvaluateDepthMap, InvalidPixelsCountAgainstCompletenessOnly) {
   EXPECT_DOUBLE_EQ(m.all.accurate[0], 1.0);
   EXPECT_DOUBLE_EQ(m.textureless.valid_fraction, 0.0);
   EXPECT_DOUBLE_EQ(m.textureless.complete[1], 0.0);
+  EXPECT_DOUBLE_EQ(m.textured.valid_fraction, 1.0);
+  EXPECT_DOUBLE_EQ(m.textured.complete[1], 1.0);
 }
 
 TEST(EvaluateDepthMap, SmallerPredictionSamplesGroundTruthNearest) {

@@ -2,8 +2,14 @@
 // of the shared per-pixel code is checked on every build with nvcc. The kernel
 // runs the conventional PatchMatch update for one colour of a checkerboard:
 // the same function the CPU driver calls.
+#include "core/anchor_windows.h"
+#include "core/anchors.h"
+#include "core/best_layer.h"
 #include "core/camera.h"
 #include "core/checkerboard.h"
+#include "core/deformable_cost.h"
+#include "core/deformable_limits.h"
+#include "core/deformable_update.h"
 #include "core/geometric_cost.h"
 #include "core/hd.h"
 #include "core/homography.h"
@@ -14,7 +20,11 @@
 #include "core/output_filter.h"
 #include "core/patch_match_kernel.h"
 #include "core/plane.h"
+#include "core/prior_limits.h"
+#include "core/ref_window.h"
+#include "core/reliability.h"
 #include "core/rng.h"
+#include "core/segment_crossing.h"
 #include "core/vec.h"
 #include "core/view_selection.h"
 #include "cuda/core_check.h"
@@ -34,13 +44,63 @@ __global__ void CheckerboardKernel(const core::PassParams* params, int color, in
   core::UpdatePixel(*params, col, row, iteration);
 }
 
+// Deformable iteration of one colour: unreliable pixels with anchors take the
+// deformable update (APD), the others the conventional one.
+__global__ void DeformableKernel(const core::PassParams* params, const core::AnchorMaps* maps,
+                                 const core::AnchorParams* anchor_params,
+                                 core::PlaneMapView planes, core::DeformableParams cost, int color,
+                                 int iteration) {
+  const int col = blockIdx.x * blockDim.x + threadIdx.x;
+  const int row = blockIdx.y * blockDim.y + threadIdx.y;
+  if (col >= params->state.width || row >= params->state.height) return;
+  if (((col + row) & 1) != color) return;
+  const int i = row * params->state.width + col;
+  core::AnchorSet anchors;
+  anchors.count = 0;
+  if (maps->classes[i] == core::kUnreliable) {
+    core::Rng rng = core::MakeRng(core::RngKey(params->seed, params->image_id, params->pass_id,
+                                               iteration, static_cast<uint32_t>(i)));
+    core::FindAnchors(params->ref_camera, *maps, col, row, *anchor_params, &rng, &anchors);
+  }
+  if (anchors.count > 0) {
+    core::DeformableUpdatePixel(*params, col, row, iteration, anchors, planes, cost);
+  } else {
+    core::UpdatePixel(*params, col, row, iteration);
+  }
+}
+
+__global__ void ClassifyKernel(const core::PassParams* params, core::ReliabilityParams rp,
+                               uint8_t* classes) {
+  const int col = blockIdx.x * blockDim.x + threadIdx.x;
+  const int row = blockIdx.y * blockDim.y + threadIdx.y;
+  if (col >= params->state.width || row >= params->state.height) return;
+  classes[row * params->state.width + col] = core::ClassifyPixel(*params, col, row, rp);
+}
+
+dim3 GridFor(int width, int height) {
+  return dim3((width + kBlockSide - 1) / kBlockSide, (height + kBlockSide - 1) / kBlockSide);
+}
+
 }  // namespace
 
 void LaunchCheckerboard(const core::PassParams* device_params, int width, int height, int color,
                         int iteration) {
-  const dim3 block(kBlockSide, kBlockSide);
-  const dim3 grid((width + kBlockSide - 1) / kBlockSide, (height + kBlockSide - 1) / kBlockSide);
-  CheckerboardKernel<<<grid, block>>>(device_params, color, iteration);
+  CheckerboardKernel<<<GridFor(width, height), dim3(kBlockSide, kBlockSide)>>>(device_params,
+                                                                              color, iteration);
+}
+
+void LaunchDeformable(const core::PassParams* device_params, const core::AnchorMaps* device_maps,
+                      const core::AnchorParams* device_anchor_params,
+                      const core::PlaneMapView& planes, const core::DeformableParams& cost,
+                      int width, int height, int color, int iteration) {
+  DeformableKernel<<<GridFor(width, height), dim3(kBlockSide, kBlockSide)>>>(
+      device_params, device_maps, device_anchor_params, planes, cost, color, iteration);
+}
+
+void LaunchClassify(const core::PassParams* device_params, const core::ReliabilityParams& rp,
+                    uint8_t* device_classes, int width, int height) {
+  ClassifyKernel<<<GridFor(width, height), dim3(kBlockSide, kBlockSide)>>>(device_params, rp,
+                                                                           device_classes);
 }
 
 }  // namespace cuda

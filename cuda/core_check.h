@@ -1,7 +1,13 @@
 // Plain C++ launcher of the device checkerboard kernel (no CUDA types here).
 #pragma once
 
+#include <cstdint>
+
+#include "core/anchors.h"
+#include "core/deformable_cost.h"
+#include "core/deformable_update.h"
 #include "core/patch_match_kernel.h"
+#include "core/reliability.h"
 
 namespace msp {
 namespace cuda {
@@ -10,6 +16,17 @@ namespace cuda {
 // `device_params` and every pointer inside it must be device memory.
 void LaunchCheckerboard(const core::PassParams* device_params, int width, int height, int color,
                         int iteration);
+
+// One colour of a deformable iteration (DeformableUpdatePixel where the
+// pixel is unreliable and has anchors); device pointers as above.
+void LaunchDeformable(const core::PassParams* device_params, const core::AnchorMaps* device_maps,
+                      const core::AnchorParams* device_anchor_params,
+                      const core::PlaneMapView& planes, const core::DeformableParams& cost,
+                      int width, int height, int color, int iteration);
+
+// Reliability class of every pixel (ClassifyPixel) into device_classes.
+void LaunchClassify(const core::PassParams* device_params, const core::ReliabilityParams& rp,
+                    uint8_t* device_classes, int width, int height);
 
 }  // namespace cuda
 }  // namespace msp

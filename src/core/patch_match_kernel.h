@@ -15,7 +15,7 @@
 #include "core/limits.h"
 #include "core/ncc.h"
 #include "core/plane.h"
-#include "core/ref_window.h"
+#include "core/window_cost.h"
 #include "core/rng.h"
 #include "core/view_selection.h"
 

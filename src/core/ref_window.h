@@ -5,8 +5,9 @@
 // unit norm. A cost then needs only three source sums:
 //   NCC = sum(r^ s) / sqrt(sum(s^2) - sum(s)^2 / n).
 // Windows the fast form cannot take (image border, bilateral weights, too many
-// samples, a sample whose warp leaves the source) use the general NccCost, so
-// both give the same cost up to float rounding.
+// samples) use the general NccCost; windows whose warp leaves the source in
+// part are summed over their valid samples (window_cost.h). Both forms give
+// the same cost up to float rounding.
 #pragma once
 
 #include <cmath>
@@ -36,6 +37,7 @@ struct RefWindow {
   int radius;
   int num_samples;  // 0: the window takes the general NccCost
   int textured;     // reference variance reaches kMinNccVariance
+  float spread;     // sum of squared deviations of the raw reference values
   // Sample positions and normalised reference values; lanes from num_samples
   // up to the next multiple of kWindowLanes repeat the centre with value 0.
   float x[kMaxFastWindowSamples];
@@ -74,6 +76,7 @@ MSP_HD void PrepareRefWindow(const ImageView& ref, int col, int row, int radius,
     sum_sq += w->value[k] * w->value[k];
   }
   w->num_samples = n;
+  w->spread = sum_sq;
   w->textured = sum_sq / n >= kMinNccVariance;
   const float inv_norm = w->textured ? 1.0f / sqrtf(sum_sq) : 0.0f;
   for (int k = 0; k < n; ++k) w->value[k] *= inv_norm;
@@ -201,20 +204,6 @@ MSP_HD float NccFromSourceSums(const SourceSums& a, int n) {
   const float cost = 1.0f - a.rs / sqrtf(spread);
   // Rounding can leave |NCC| a hair above 1.
   return cost < 0.0f ? 0.0f : (cost > kMaxCost ? kMaxCost : cost);
-}
-
-// 1 - NCC in [0, 2] of window w under H: the same cost as NccCost at the
-// window's centre with uniform weights.
-MSP_HD float WindowNccCost(const RefWindow& w, const ImageView& ref, const ImageView& src,
-                           const Mat3& H, const NccParams& p) {
-  SourceSums sums;
-  if (w.num_samples == 0 || !WindowSums(w, src, H, &sums)) {
-    return NccCost(ref, src, H, w.col, w.row, p);
-  }
-  // A flat reference window fails in NccCost as well; checked after the
-  // sums so a window that is partly outside the source gets the same answer.
-  if (!w.textured) return kMaxCost;
-  return NccFromSourceSums(sums, w.num_samples);
 }
 
 }  // namespace core

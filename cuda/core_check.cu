@@ -27,6 +27,7 @@
 #include "core/segment_crossing.h"
 #include "core/vec.h"
 #include "core/view_selection.h"
+#include "core/warped_sample.h"
 #include "core/window_cost.h"
 #include "cuda/core_check.h"
 

@@ -84,26 +84,14 @@ struct AnchorSums {
 MSP_HD void AnchorSumsScalar(const AnchorWindows& w, const ImageView& src, const Mat3& H,
                              AnchorSums* out) {
   out->inside = 0u;
-  const float max_u = src.width - 1.0f, max_v = src.height - 1.0f;
   for (int a = 0; a < kMaxAnchors; ++a) {
     out->s[a] = out->ss[a] = out->rs[a] = 0.0f;
     if (!((w.fast >> a) & 1u)) continue;
     bool inside = true;
-    for (int k = 0; k < w.num_samples; ++k) {
-      const float x = w.x[k][a], y = w.y[k][a];
-      const float h2 = H.m[6] * x + H.m[7] * y + H.m[8];
-      const float inv = 1.0f / h2;
-      const float u = (H.m[0] * x + H.m[1] * y + H.m[2]) * inv;
-      const float v = (H.m[3] * x + H.m[4] * y + H.m[5]) * inv;
-      inside = h2 > 0.0f && u >= 0.0f && v >= 0.0f && u < max_u && v < max_v;
+    for (int k = 0; k < w.num_samples && inside; ++k) {
+      float s;
+      inside = SampleWarped(src, H, w.x[k][a], w.y[k][a], &s);
       if (!inside) break;
-      const int c0 = static_cast<int>(u), r0 = static_cast<int>(v);
-      const float fx = u - c0, fy = v - r0;
-      const float* p0 = src.data + r0 * src.pitch + c0;
-      const float* p1 = p0 + src.pitch;
-      const float top = p0[0] + fx * (p0[1] - p0[0]);
-      const float bottom = p1[0] + fx * (p1[1] - p1[0]);
-      const float s = top + fy * (bottom - top);
       out->s[a] += s;
       out->ss[a] += s * s;
       out->rs[a] += w.value[k][a] * s;
@@ -119,43 +107,15 @@ static_assert(kMaxAnchors == kWindowLanes, "one vector lane per anchor");
 // sample leaves the source reads pixel 0 instead and is dropped at the end.
 inline void AnchorSumsAvx2(const AnchorWindows& w, const ImageView& src, const Mat3& H,
                            AnchorSums* out) {
-  const __m256 h0 = _mm256_set1_ps(H.m[0]), h1 = _mm256_set1_ps(H.m[1]);
-  const __m256 h2 = _mm256_set1_ps(H.m[2]), h3 = _mm256_set1_ps(H.m[3]);
-  const __m256 h4 = _mm256_set1_ps(H.m[4]), h5 = _mm256_set1_ps(H.m[5]);
-  const __m256 h6 = _mm256_set1_ps(H.m[6]), h7 = _mm256_set1_ps(H.m[7]);
-  const __m256 h8 = _mm256_set1_ps(H.m[8]);
-  const __m256i pitch = _mm256_set1_epi32(src.pitch);
-  const __m256 zero = _mm256_setzero_ps();
-  const __m256 max_u = _mm256_set1_ps(src.width - 1.0f), max_v = _mm256_set1_ps(src.height - 1.0f);
+  const WarpLanes lanes = MakeWarpLanes(H, src);
   const __m256i lane_bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
   __m256 ok = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
       _mm256_and_si256(_mm256_set1_epi32(static_cast<int>(w.fast)), lane_bit), lane_bit));
-  __m256 sum_s = zero, sum_ss = zero, sum_rs = zero;
+  __m256 sum_s = _mm256_setzero_ps(), sum_ss = _mm256_setzero_ps(), sum_rs = _mm256_setzero_ps();
   for (int k = 0; k < w.num_samples; ++k) {
-    const __m256 x = _mm256_loadu_ps(w.x[k]), y = _mm256_loadu_ps(w.y[k]);
-    const __m256 hw = _mm256_fmadd_ps(h6, x, _mm256_fmadd_ps(h7, y, h8));
-    const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), hw);
-    const __m256 u = _mm256_mul_ps(_mm256_fmadd_ps(h0, x, _mm256_fmadd_ps(h1, y, h2)), inv);
-    const __m256 v = _mm256_mul_ps(_mm256_fmadd_ps(h3, x, _mm256_fmadd_ps(h4, y, h5)), inv);
-    const __m256 inside = _mm256_and_ps(
-        _mm256_and_ps(_mm256_cmp_ps(hw, zero, _CMP_GT_OQ), _mm256_cmp_ps(u, zero, _CMP_GE_OQ)),
-        _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(v, zero, _CMP_GE_OQ),
-                                    _mm256_cmp_ps(u, max_u, _CMP_LT_OQ)),
-                      _mm256_cmp_ps(v, max_v, _CMP_LT_OQ)));
-    ok = _mm256_and_ps(ok, inside);
-    // Out-of-range or NaN coordinates convert to garbage: zero those indices.
-    const __m256i c0 = _mm256_cvttps_epi32(_mm256_and_ps(u, inside));
-    const __m256i r0 = _mm256_cvttps_epi32(_mm256_and_ps(v, inside));
-    const __m256 fx = _mm256_sub_ps(_mm256_and_ps(u, inside), _mm256_cvtepi32_ps(c0));
-    const __m256 fy = _mm256_sub_ps(_mm256_and_ps(v, inside), _mm256_cvtepi32_ps(r0));
-    const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(r0, pitch), c0);
-    const __m256 p00 = _mm256_i32gather_ps(src.data, index, 4);
-    const __m256 p01 = _mm256_i32gather_ps(src.data + 1, index, 4);
-    const __m256 p10 = _mm256_i32gather_ps(src.data + src.pitch, index, 4);
-    const __m256 p11 = _mm256_i32gather_ps(src.data + src.pitch + 1, index, 4);
-    const __m256 top = _mm256_fmadd_ps(fx, _mm256_sub_ps(p01, p00), p00);
-    const __m256 bottom = _mm256_fmadd_ps(fx, _mm256_sub_ps(p11, p10), p10);
-    const __m256 s = _mm256_fmadd_ps(fy, _mm256_sub_ps(bottom, top), top);
+    const WarpedCells cells = WarpCells(lanes, _mm256_loadu_ps(w.x[k]), _mm256_loadu_ps(w.y[k]));
+    ok = _mm256_and_ps(ok, cells.inside);
+    const __m256 s = GatherBilinear(src, cells);
     sum_s = _mm256_add_ps(sum_s, s);
     sum_ss = _mm256_fmadd_ps(s, s, sum_ss);
     sum_rs = _mm256_fmadd_ps(_mm256_loadu_ps(w.value[k]), s, sum_rs);

@@ -1,0 +1,135 @@
+// One warped bilinear sample, the step every form of the matching cost
+// repeats: a reference position mapped by the homography into the source,
+// accepted only when its whole 2x2 support lies there (0 <= u < width - 1,
+// 0 <= v < height - 1, in front of the camera), so the taps need no bounds
+// checks. Scalar, and eight lanes at a time with AVX2 where the build has it.
+#pragma once
+
+#include "core/hd.h"
+#include "core/image_view.h"
+#include "core/vec.h"
+
+#if defined(__AVX2__) && defined(__FMA__) && !defined(__CUDACC__)
+#define MSP_WINDOW_SUMS_AVX2 1
+#include <immintrin.h>
+#endif
+
+namespace msp {
+namespace core {
+
+// Samples the source at the warp of (x, y); false (value untouched) when the
+// bilinear support leaves the source.
+MSP_HD bool SampleWarped(const ImageView& src, const Mat3& H, float x, float y, float* value) {
+  const float h2 = H.m[6] * x + H.m[7] * y + H.m[8];
+  const float inv = 1.0f / h2;
+  const float u = (H.m[0] * x + H.m[1] * y + H.m[2]) * inv;
+  const float v = (H.m[3] * x + H.m[4] * y + H.m[5]) * inv;
+  if (!(h2 > 0.0f && u >= 0.0f && v >= 0.0f && u < src.width - 1.0f && v < src.height - 1.0f)) {
+    return false;
+  }
+  const int c0 = static_cast<int>(u), r0 = static_cast<int>(v);
+  const float fx = u - c0, fy = v - r0;
+  const float* p0 = src.data + r0 * src.pitch + c0;
+  const float* p1 = p0 + src.pitch;
+  const float top = p0[0] + fx * (p0[1] - p0[0]);
+  const float bottom = p1[0] + fx * (p1[1] - p1[0]);
+  *value = top + fy * (bottom - top);
+  return true;
+}
+
+#if defined(MSP_WINDOW_SUMS_AVX2)
+inline float HorizontalSum(__m256 v) {
+  const __m128 lo = _mm_add_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+  const __m128 pairs = _mm_add_ps(lo, _mm_movehl_ps(lo, lo));
+  return _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, 1)));
+}
+
+// The homography and the source bounds, broadcast once per cost.
+struct WarpLanes {
+  __m256 h[9];
+  __m256 max_u, max_v;
+  __m256i pitch;
+};
+
+inline WarpLanes MakeWarpLanes(const Mat3& H, const ImageView& src) {
+  WarpLanes w;
+  for (int i = 0; i < 9; ++i) w.h[i] = _mm256_set1_ps(H.m[i]);
+  w.max_u = _mm256_set1_ps(src.width - 1.0f);
+  w.max_v = _mm256_set1_ps(src.height - 1.0f);
+  w.pitch = _mm256_set1_epi32(src.pitch);
+  return w;
+}
+
+// Eight warped positions: the bilinear cell (index of its top-left pixel,
+// fractions fx, fy) and the mask of lanes whose support lies in the source.
+// Lanes outside get index 0 and fractions 0, so gathers stay in bounds.
+struct WarpedCells {
+  __m256i index;
+  __m256 fx, fy;
+  __m256 inside;
+};
+
+inline WarpedCells WarpCells(const WarpLanes& w, __m256 x, __m256 y) {
+  const __m256 zero = _mm256_setzero_ps();
+  const __m256 hw = _mm256_fmadd_ps(w.h[6], x, _mm256_fmadd_ps(w.h[7], y, w.h[8]));
+  const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), hw);
+  const __m256 u = _mm256_mul_ps(_mm256_fmadd_ps(w.h[0], x, _mm256_fmadd_ps(w.h[1], y, w.h[2])), inv);
+  const __m256 v = _mm256_mul_ps(_mm256_fmadd_ps(w.h[3], x, _mm256_fmadd_ps(w.h[4], y, w.h[5])), inv);
+  // Ordered compares are false for NaN, so a degenerate warp fails too.
+  WarpedCells c;
+  c.inside = _mm256_and_ps(
+      _mm256_and_ps(_mm256_cmp_ps(hw, zero, _CMP_GT_OQ), _mm256_cmp_ps(u, zero, _CMP_GE_OQ)),
+      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(v, zero, _CMP_GE_OQ),
+                                  _mm256_cmp_ps(u, w.max_u, _CMP_LT_OQ)),
+                    _mm256_cmp_ps(v, w.max_v, _CMP_LT_OQ)));
+  const __m256 u_in = _mm256_and_ps(u, c.inside), v_in = _mm256_and_ps(v, c.inside);
+  const __m256i c0 = _mm256_cvttps_epi32(u_in), r0 = _mm256_cvttps_epi32(v_in);
+  c.fx = _mm256_sub_ps(u_in, _mm256_cvtepi32_ps(c0));
+  c.fy = _mm256_sub_ps(v_in, _mm256_cvtepi32_ps(r0));
+  c.index = _mm256_add_epi32(_mm256_mullo_epi32(r0, w.pitch), c0);
+  return c;
+}
+
+inline __m256 Bilinear(const WarpedCells& c, __m256 p00, __m256 p01, __m256 p10, __m256 p11) {
+  const __m256 top = _mm256_fmadd_ps(c.fx, _mm256_sub_ps(p01, p00), p00);
+  const __m256 bottom = _mm256_fmadd_ps(c.fx, _mm256_sub_ps(p11, p10), p10);
+  return _mm256_fmadd_ps(c.fy, _mm256_sub_ps(bottom, top), top);
+}
+
+// The bilinear values of eight cells, one gather per tap.
+inline __m256 GatherBilinear(const ImageView& src, const WarpedCells& c) {
+  return Bilinear(c, _mm256_i32gather_ps(src.data, c.index, 4),
+                  _mm256_i32gather_ps(src.data + 1, c.index, 4),
+                  _mm256_i32gather_ps(src.data + src.pitch, c.index, 4),
+                  _mm256_i32gather_ps(src.data + src.pitch + 1, c.index, 4));
+}
+
+// The same with the two taps of a row fetched as one 64-bit pair: half the
+// gathered elements. The index lanes are pre-ordered so that de-interleaving
+// the pairs puts the samples back in lane order.
+inline __m256 GatherBilinearPairs(const ImageView& src, const WarpedCells& c) {
+  const __m256i pair_order = _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
+  const __m256i index = _mm256_permutevar8x32_epi32(c.index, pair_order);
+  const __m128i low = _mm256_castsi256_si128(index), high = _mm256_extracti128_si256(index, 1);
+  const double* row0 = reinterpret_cast<const double*>(src.data);
+  const double* row1 = reinterpret_cast<const double*>(src.data + src.pitch);
+  // Scale 4: the indices count floats; each gathered double is a tap pair.
+  const __m256 top_low = _mm256_castpd_ps(_mm256_i32gather_pd(row0, low, 4));
+  const __m256 top_high = _mm256_castpd_ps(_mm256_i32gather_pd(row0, high, 4));
+  const __m256 bottom_low = _mm256_castpd_ps(_mm256_i32gather_pd(row1, low, 4));
+  const __m256 bottom_high = _mm256_castpd_ps(_mm256_i32gather_pd(row1, high, 4));
+  return Bilinear(c, _mm256_shuffle_ps(top_low, top_high, _MM_SHUFFLE(2, 0, 2, 0)),
+                  _mm256_shuffle_ps(top_low, top_high, _MM_SHUFFLE(3, 1, 3, 1)),
+                  _mm256_shuffle_ps(bottom_low, bottom_high, _MM_SHUFFLE(2, 0, 2, 0)),
+                  _mm256_shuffle_ps(bottom_low, bottom_high, _MM_SHUFFLE(3, 1, 3, 1)));
+}
+
+// Lanes 0 .. n-1 set (n may exceed 8).
+inline __m256 FirstLanes(int n) {
+  const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  return _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_set1_epi32(n), lane));
+}
+#endif
+
+}  // namespace core
+}  // namespace msp

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "dense_map_io.h"
+#include "prior_previews.h"
 #include "workspace.h"
 
 namespace msp {
@@ -48,6 +49,13 @@ void MapWriter::Write(int view, const std::string& type, const DenseMap& depth,
   // between the two writes recomputes this view instead of skipping it.
   WriteDenseMap(DepthMapPath(workspace_path_, name, type), depth);
   WriteDenseMap(NormalMapPath(workspace_path_, name, type), normal);
+}
+
+void MapWriter::WritePriorPreview(int view, const DenseMap& color,
+                                  const std::vector<uint8_t>& aggregated_edges,
+                                  const std::vector<uint8_t>& refined_edges) {
+  msp::WritePriorPreview(PriorPreviewPath(workspace_path_, Name(view)), color, aggregated_edges,
+                         refined_edges);
 }
 
 }  // namespace msp

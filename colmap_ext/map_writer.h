@@ -27,6 +27,12 @@ class MapWriter : public MapSink {
   void Write(int view, const std::string& type, const DenseMap& depth,
              const DenseMap& normal) override;
 
+  // <workspace>/stereo/prior_previews/<name>.png (prior_previews.h),
+  // atomically; InputError when it cannot be written.
+  void WritePriorPreview(int view, const DenseMap& color,
+                         const std::vector<uint8_t>& aggregated_edges,
+                         const std::vector<uint8_t>& refined_edges) override;
+
   const std::string& final_type() const { return final_type_; }
 
  private:

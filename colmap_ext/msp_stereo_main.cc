@@ -54,6 +54,14 @@ void WarnAboutIgnoredOptions(const StereoCommandOptions& options) {
     std::cout << "WARNING: --PatchMatchStereo.ncc_sigma / incident_angle_sigma are ignored "
                  "(view selection follows ACMM, not COLMAP's likelihood model)\n";
   }
+  if (options.msp.segmentation_prior && !options.msp.deformable) {
+    std::cout << "WARNING: --MspStereo.segmentation_prior has no effect without "
+                 "--MspStereo.deformable (the prior confines the anchors of deformable patches)\n";
+  }
+  if (options.msp.write_previews && !(options.msp.segmentation_prior && options.msp.deformable)) {
+    std::cout << "WARNING: --MspStereo.write_previews writes nothing: the segmentation prior "
+                 "does not run\n";
+  }
   if (options.msp.backend == "cpu" && options.patch_match.gpu_index != "-1") {
     std::cout << "WARNING: --PatchMatchStereo.gpu_index is ignored by the cpu back-end "
                  "(use --MspStereo.backend cuda)\n";

@@ -13,6 +13,7 @@
 #include "errors.h"
 #include "file_util.h"
 #include "image_loading.h"
+#include "mask_layers.h"
 #include "patch_match_config.h"
 
 namespace msp {
@@ -221,6 +222,34 @@ void LoadViews(const std::vector<Problem>& problems, int max_image_size, Workspa
   }
 }
 
+// The segmentation prior's mask layers of every reference view, read at the
+// working resolution; views without mask files are left to the embedded
+// segmenter. The prior only runs with deformable patches, so nothing is read
+// otherwise.
+void LoadPriorMaskLayers(const StereoCommandOptions& options, Workspace* ws) {
+  if (!options.msp.segmentation_prior || !options.msp.deformable) return;
+  std::vector<int> refs;
+  for (const Problem& problem : ws->problems) {
+    if (std::find(refs.begin(), refs.end(), problem.ref) == refs.end()) refs.push_back(problem.ref);
+  }
+  std::vector<MaskImage> images;
+  for (int ref : refs) {
+    const SparseImage& image = ws->model.images[ref];
+    const SparseCamera& camera = ws->model.cameras[ws->model.FindCamera(image.camera_id)];
+    MaskImage mask;
+    mask.name = ws->views[ref].name;
+    mask.width = static_cast<int>(camera.width);
+    mask.height = static_cast<int>(camera.height);
+    mask.work_width = ws->views[ref].camera.width;
+    mask.work_height = ws->views[ref].camera.height;
+    images.push_back(mask);
+  }
+  std::vector<ImageLabelLayers> layers =
+      LoadMaskLayers(ResolveMaskPath(options.msp.mask_path, ws->path), images,
+                     options.msp.num_mask_levels, &std::cout);
+  for (size_t i = 0; i < refs.size(); ++i) ws->views[refs[i]].mask_layers = std::move(layers[i]);
+}
+
 }  // namespace
 
 Workspace LoadWorkspace(const StereoCommandOptions& options) {
@@ -241,6 +270,7 @@ Workspace LoadWorkspace(const StereoCommandOptions& options) {
   AssignDepthRanges(options.patch_match, ws, &problems);
   LoadViews(problems, options.patch_match.max_image_size, &ws);
   ws.problems = std::move(problems);
+  LoadPriorMaskLayers(options, &ws);
   return ws;
 }
 

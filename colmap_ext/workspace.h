@@ -24,8 +24,10 @@ struct Workspace {
 // options.config_path), the images used by them from images/<name>, downsized
 // to --PatchMatchStereo.max_image_size with the intrinsics scaled as COLMAP's
 // mvs::Image::Downsize does. Cameras must be SIMPLE_PINHOLE, PINHOLE or a
-// model whose distortion parameters are all zero. Throws InputError with a
-// specific message on every bad input.
+// model whose distortion parameters are all zero. With the segmentation prior
+// (and deformable patches) on, the reference views' mask layers are read from
+// --MspStereo.mask_path (default <workspace>/masks) and the source of each is
+// logged. Throws InputError with a specific message on every bad input.
 Workspace LoadWorkspace(const StereoCommandOptions& options);
 
 // Converts a sparse camera + image pose to the core camera; throws InputError

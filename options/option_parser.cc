@@ -188,8 +188,9 @@ void DefineOptions(StereoCommandOptions* o, CompatibilityOptions* c, OptionTable
          "Anchor search range in pixels of the current round (>= 2).");
   t->Add(ms + "segmentation_prior", &m.segmentation_prior,
          "Confine anchors by the multi-granularity segmentation prior (mask layers from "
-         "--MspStereo.mask_path, else the embedded segmenter); false = w/o Mul. Not yet used by "
-         "the passes in this version (the prior's steps are built and tested separately).");
+         "--MspStereo.mask_path, else the embedded segmenter): after each deformable pass its "
+         "depth edges are recomputed, and later passes take no anchor across them; needs "
+         "--MspStereo.deformable. false = w/o Mul. (APD-MVS).");
   t->Add(ms + "edge_aggregation", &m.edge_aggregation,
          "Aggregate the mask layers per region by their best anchor subsets (eqs. 4-5); false = "
          "the union of all layers' boundaries (w/o Agr.).");
@@ -200,7 +201,7 @@ void DefineOptions(StereoCommandOptions* o, CompatibilityOptions* c, OptionTable
              std::to_string(core::kMaxLabelLayers) + "); mask files set their own count.");
   t->Add(ms + "write_previews", &m.write_previews,
          "Write stereo/prior_previews/<image>.png with the aggregated (red) and refined (green) "
-         "edges over the image.");
+         "edges that confined the final pass, over the image.");
   t->Add(ms + "crf_alpha", &m.crf_alpha,
          "(0, inf). CRF depth bandwidth as a fraction of the depth range (eq. 6 alpha).");
   t->Add(ms + "crf_beta", &m.crf_beta,

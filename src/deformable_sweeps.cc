@@ -13,6 +13,26 @@ namespace {
 // coincide with the propagation / refinement streams of the same pixel.
 constexpr uint32_t kAnchorSeedSalt = 0xA5C1D3E7u;
 
+static_assert(core::kMaxAnchors <= core::kMaxPriorAnchors,
+              "every anchor of a pixel fits the prior's anchor subsets");
+
+// Pixel p's anchors as the segmentation prior reads them.
+core::PriorAnchors ToPriorAnchors(const core::Camera& cam, const core::AnchorSet& set,
+                                  const float* depth, int width, int col, int row) {
+  core::PriorAnchors out;
+  out.col = col;
+  out.row = row;
+  out.count = set.count;
+  for (int k = 0; k < set.count; ++k) {
+    out.cols[k] = set.cols[k];
+    out.rows[k] = set.rows[k];
+    out.points[k] = core::BackProject(cam, static_cast<float>(set.cols[k]),
+                                      static_cast<float>(set.rows[k]),
+                                      depth[set.rows[k] * width + set.cols[k]]);
+  }
+  return out;
+}
+
 }  // namespace
 
 ReliabilityMaps ClassifyState(const core::PassParams& params, const core::ReliabilityParams& rp,
@@ -41,10 +61,10 @@ ReliabilityMaps ClassifyState(const core::PassParams& params, const core::Reliab
   return maps;
 }
 
-DeformableStats RunDeformableCheckerboardIterations(const core::PassParams& params,
-                                                    const ReliabilityMaps& maps,
-                                                    const DeformableSettings& settings,
-                                                    int num_iterations, int num_threads) {
+DeformableStats RunDeformableCheckerboardIterations(
+    const core::PassParams& params, const ReliabilityMaps& maps,
+    const DeformableSettings& settings, int num_iterations, int num_threads,
+    std::vector<core::PriorAnchors>* prior_anchors) {
   const core::PixelStateView& s = params.state;
   const int width = s.width, height = s.height;
   const size_t n = static_cast<size_t>(width) * height;
@@ -57,8 +77,10 @@ DeformableStats RunDeformableCheckerboardIterations(const core::PassParams& para
   std::vector<core::AnchorSet> anchors(num_slots);
   std::vector<float> depth(n), normal(3 * n);
   const core::PlaneMapView planes{depth.data(), normal.data(), width, height};
-  const core::AnchorMaps anchor_maps{maps.classes.data(), maps.nearest.data(), depth.data(), width,
-                                     height};
+  const core::AnchorMaps anchor_maps{maps.classes.data(), maps.nearest.data(), depth.data(),
+                                     width,
+                                     height,
+                                     settings.edges};
   DeformableStats stats;
   for (int iteration = 0; iteration < num_iterations; ++iteration) {
     depth.assign(s.depth, s.depth + n);
@@ -79,6 +101,15 @@ DeformableStats RunDeformableCheckerboardIterations(const core::PassParams& para
       anchored += count;
     });
     stats.anchored_updates += anchored;
+    if (iteration == 0 && prior_anchors != nullptr) {
+      prior_anchors->clear();
+      for (size_t i = 0; i < n; ++i) {
+        if (slot[i] < 0 || anchors[slot[i]].count == 0) continue;
+        prior_anchors->push_back(ToPriorAnchors(params.ref_camera, anchors[slot[i]], depth.data(),
+                                                width, static_cast<int>(i % width),
+                                                static_cast<int>(i / width)));
+      }
+    }
     for (int color = 0; color < 2; ++color) {
       ParallelFor(0, height, num_threads, [&](int row) {
         for (int col = (row + color) & 1; col < width; col += 2) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/anchors.h"
+#include "core/best_layer.h"
 #include "core/deformable_cost.h"
 #include "core/patch_match_kernel.h"
 #include "core/reliability.h"
@@ -33,6 +34,9 @@ ReliabilityMaps ClassifyState(const core::PassParams& params, const core::Reliab
 struct DeformableSettings {
   core::AnchorParams anchors;
   core::DeformableParams cost;
+  // Depth edges of the segmentation prior that confine the anchor search
+  // (1 byte per pixel, nonzero = edge); data == nullptr = unconfined.
+  core::BoundaryView edges{nullptr, 0, 0, 0};
 };
 
 // Statistics of one call, for the log.
@@ -43,9 +47,12 @@ struct DeformableStats {
 // `num_iterations` red-black iterations. Before each, the anchors of every
 // unreliable pixel are searched on a snapshot of the planes; during the
 // sweeps those pixels use the deformable update, the others the conventional.
-DeformableStats RunDeformableCheckerboardIterations(const core::PassParams& params,
-                                                    const ReliabilityMaps& maps,
-                                                    const DeformableSettings& settings,
-                                                    int num_iterations, int num_threads);
+// When `prior_anchors` is given it receives, in pixel order, every unreliable
+// pixel with anchors in the first iteration: the anchors and their
+// camera-frame points on that snapshot (the input of eq. 4).
+DeformableStats RunDeformableCheckerboardIterations(
+    const core::PassParams& params, const ReliabilityMaps& maps,
+    const DeformableSettings& settings, int num_iterations, int num_threads,
+    std::vector<core::PriorAnchors>* prior_anchors = nullptr);
 
 }  // namespace msp

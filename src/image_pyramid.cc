@@ -48,6 +48,7 @@ PixelState UpsampleState(const PixelState& coarse, const core::Camera& coarse_ca
   const core::PixelStateView fv = fine.View();
   const float sx = static_cast<float>(coarse_cam.width) / fine_cam.width;
   const float sy = static_cast<float>(coarse_cam.height) / fine_cam.height;
+  if (!coarse.edges.empty()) fine.edges.assign(fine.depth.size(), 0);
   for (int r = 0; r < fine.height; ++r) {
     const int cr = std::min(coarse.height - 1, static_cast<int>(r * sy));
     for (int c = 0; c < fine.width; ++c) {
@@ -56,6 +57,7 @@ PixelState UpsampleState(const PixelState& coarse, const core::Camera& coarse_ca
       const int fi = fv.Index(c, r);
       const core::PlaneHypothesis h = coarse.Plane(ci);
       fine.mask[fi] = coarse.mask[ci];
+      if (!fine.edges.empty()) fine.edges[fi] = coarse.edges[ci];  // nearest: edges never blend
       if (!(h.depth > 0.0f)) continue;
       // The plane is a 3D object: its distance term is the same in both
       // cameras (same pose), so intersect it with the fine pixel's ray.

@@ -20,7 +20,8 @@ core::Camera HalveCamera(const core::Camera& camera, int new_width, int new_heig
 
 // Planes of `coarse` (camera `coarse_cam`) carried to every pixel of the finer
 // image (camera `fine_cam`): each fine pixel continues the plane of the coarse
-// pixel it falls in. Costs are left at the maximum: the next pass rescores.
+// pixel it falls in, and takes its view mask and prior edge bits. Costs are
+// left at the maximum: the next pass rescores.
 PixelState UpsampleState(const PixelState& coarse, const core::Camera& coarse_cam,
                          const core::Camera& fine_cam);
 

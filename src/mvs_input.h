@@ -8,6 +8,7 @@
 
 #include "core/camera.h"
 #include "dense_map.h"
+#include "label_layers.h"
 
 namespace msp {
 
@@ -16,6 +17,10 @@ struct View {
   core::Camera camera;    // intrinsics scaled to the working resolution
   DenseMap gray;          // 1 channel, values in [0, 1], camera.width x camera.height
   DenseMap color;         // 3 channels RGB in [0, 1], same size (segmentation prior)
+  // Segmentation mask layers of the prior at the working resolution, read by
+  // colmap_ext for reference views; kEmbeddedSegmenter (layers empty) = the
+  // prior segments `color` itself at every round's resolution.
+  ImageLabelLayers mask_layers;
 };
 
 struct Problem {

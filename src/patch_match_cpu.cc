@@ -7,11 +7,13 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <stdexcept>
 
 #include "core/output_filter.h"
 #include "deformable_sweeps.h"
 #include "image_pyramid.h"
 #include "parallel_for.h"
+#include "prior_driver.h"
 #include "state_cache.h"
 #include "sweeps.h"
 
@@ -29,9 +31,11 @@ constexpr double kBytesPerGigabyte = 1024.0 * 1024.0 * 1024.0;
 // Pass ids inside a round; rounds are spaced so (round, pass) pairs are unique.
 constexpr uint32_t kPassesPerRoundStride = 8;
 
-// Images and cameras of every processed view at one pyramid level.
+// Images and cameras of every processed view at one pyramid level; colour
+// only for reference views, and only when the segmentation prior runs.
 struct Level {
   std::map<int, DenseMap> gray;
+  std::map<int, DenseMap> color;
   std::map<int, core::Camera> cameras;
 };
 
@@ -79,7 +83,10 @@ class CpuRunner {
         msp_(msp),
         sink_(sink),
         threads_(ResolveNumThreads(msp.num_threads)),
-        cache_(static_cast<size_t>(pm.cache_size * kBytesPerGigabyte), scratch_dir) {}
+        cache_(static_cast<size_t>(pm.cache_size * kBytesPerGigabyte), scratch_dir) {
+    // The prior confines anchors, so it only runs with deformable patches.
+    if (msp.deformable && msp.segmentation_prior) prior_.reset(new PriorDriver(views, msp, threads_));
+  }
 
   void Run() {
     run_ = ProblemsToRun(problems_, sink_);
@@ -100,6 +107,11 @@ class CpuRunner {
                 threads_);
     start_ = std::chrono::steady_clock::now();
     for (int round = 0; round < num_rounds; ++round) RunRound(round, num_rounds);
+    if (prior_ != nullptr) {
+      std::printf("Segmentation prior: %d calls, %.2f s, %.1f%% of the %.2f s of the passes\n",
+                  prior_->NumCalls(), prior_->TotalSeconds(),
+                  100.0 * prior_->TotalSeconds() / std::max(Elapsed(), 1e-9), Elapsed());
+    }
   }
 
  private:
@@ -124,6 +136,19 @@ class CpuRunner {
       }
       level.gray.emplace(v, std::move(gray));
       level.cameras.emplace(v, camera);
+    }
+    if (prior_ != nullptr) {
+      for (int k : run_) {
+        const View& view = views_[problems_[k].ref];
+        if (view.color.channels != 3 || view.color.width != view.gray.width ||
+            view.color.height != view.gray.height) {
+          throw std::invalid_argument("view " + view.name +
+                                      ": the segmentation prior needs its RGB image");
+        }
+        DenseMap color = view.color;
+        for (int h = 0; h < halvings; ++h) color = DownsampleHalf(color);
+        level.color.emplace(problems_[k].ref, std::move(color));
+      }
     }
     return level;
   }
@@ -172,6 +197,7 @@ class CpuRunner {
     const Level* previous = coarser_.get();
     const int num_passes = 1 + (pm_.geom_consistency ? kNumGeometricPasses : 0);
     const bool last_round = round == num_rounds - 1;
+    if (prior_ != nullptr) prior_->StartRound();
     for (int pass = 0; pass < num_passes; ++pass) {
       const bool geometric = pass > 0;
       // Jacobi: every problem reads its sources' depths as they were before this pass.
@@ -196,15 +222,26 @@ class CpuRunner {
         } else {
           ScoreState(params, threads_);
         }
-        if (msp_.deformable && !(round == 0 && pass == 0)) {
+        const bool final_pass = last_round && pass == num_passes - 1;
+        const bool deformable = msp_.deformable && !(round == 0 && pass == 0);
+        // The prior's edges confine the passes after the one that made them,
+        // so none are made in the final pass.
+        const bool run_prior = prior_ != nullptr && deformable && !final_pass;
+        std::vector<core::PriorAnchors> prior_anchors;
+        if (deformable) {
           // The previous pass of this image (the last of the coarser round at a round start).
-          RunDeformableIterations(params, round, pass > 0 ? pass - 1 : num_passes - 1);
+          RunDeformableIterations(params, round, pass > 0 ? pass - 1 : num_passes - 1, state.edges,
+                                  run_prior ? &prior_anchors : nullptr);
         } else {
           RunCheckerboardIterations(params, kIterationsPerPass, threads_);
         }
         MedianFilterState(params, threads_);
         LocalRefineState(params, threads_);
+        if (run_prior) RunPrior(level, problem, pass_id, round, prior_anchors, &state);
+        const bool preview = final_pass && prior_ != nullptr && msp_.write_previews &&
+                             !sink_.HasFinalOutput(problem.ref);
         if (last_round) WriteOutputs(params, problem, pass, num_passes);
+        if (preview) WritePreview(level, problem, state);
         cache_.Put(problem.ref, std::move(state));
         cache_.EnforceBudget(problem.ref);
         const double seconds =
@@ -222,7 +259,12 @@ class CpuRunner {
   // Deformable patch matching (algorithm.md 2): the state the previous pass
   // left (upsampled at a round start) is classified, then unreliable pixels
   // with anchors take the deformable update during the pass's iterations.
-  void RunDeformableIterations(const core::PassParams& params, int round, int finished_pass) {
+  // With the segmentation prior, `edges` (PixelState::edges, empty until the
+  // prior first ran) confine the anchor search, and `prior_anchors` receives
+  // the anchors of the first iteration.
+  void RunDeformableIterations(const core::PassParams& params, int round, int finished_pass,
+                               const std::vector<uint8_t>& edges,
+                               std::vector<core::PriorAnchors>* prior_anchors) {
     core::ReliabilityParams reliability = core::DefaultReliabilityParams(finished_pass);
     reliability.max_minimum_cost = static_cast<float>(msp_.reliable_max_cost);
     reliability.single_min_cost = static_cast<float>(msp_.reliable_single_cost);
@@ -232,12 +274,56 @@ class CpuRunner {
     settings.anchors = core::DefaultAnchorParams(round, params.depth_max - params.depth_min,
                                                  msp_.anchor_max_distance);
     settings.cost = core::DefaultDeformableParams();
-    const DeformableStats stats =
-        RunDeformableCheckerboardIterations(params, maps, settings, kIterationsPerPass, threads_);
+    if (prior_ != nullptr && !edges.empty()) {
+      if (edges.size() != static_cast<size_t>(maps.width) * maps.height) {
+        throw std::logic_error("segmentation prior edges and pixel state differ in size");
+      }
+      // The packed bits: only kConfiningEdge confines.
+      confining_.resize(edges.size());
+      for (size_t i = 0; i < edges.size(); ++i) confining_[i] = edges[i] & kConfiningEdge;
+      settings.edges = core::BoundaryView{confining_.data(), maps.width, maps.height, maps.width};
+    }
+    const DeformableStats stats = RunDeformableCheckerboardIterations(
+        params, maps, settings, kIterationsPerPass, threads_, prior_anchors);
     const double pixels = static_cast<double>(maps.width) * maps.height;
     std::printf("  reliable %.1f%%, unreliable %.1f%%, deformable updates %.1f%% of pixels\n",
                 100.0 * maps.num_reliable / pixels, 100.0 * maps.num_unreliable / pixels,
                 100.0 * stats.anchored_updates / (pixels * kIterationsPerPass));
+  }
+
+  // The prior of one image after a deformable pass (algorithm.md 3.1-3.2): its
+  // anchors of this pass and the depth the pass left give the edges that
+  // confine the following passes. The first call of an image has only the
+  // photometric pass's depth, mostly noise where the prior matters
+  // (textureless regions), so its CRF uses colour only.
+  void RunPrior(const Level& level, const Problem& problem, uint32_t pass_id, int round,
+                const std::vector<core::PriorAnchors>& anchors, PixelState* state) {
+    DenseMap depth;
+    const bool with_depth = !state->edges.empty();
+    if (with_depth) {
+      depth = DenseMap(state->width, state->height, 1);
+      depth.data = state->depth;
+    }
+    PriorPassInput input;
+    input.view = problem.ref;
+    input.color = &level.color.at(problem.ref);
+    input.depth = with_depth ? &depth : nullptr;
+    input.depth_min = problem.depth_min;
+    input.depth_max = problem.depth_max;
+    input.anchors = &anchors;
+    input.inlier_distance = core::AnchorInlierThreshold(round, problem.depth_max - problem.depth_min);
+    input.pass_id = pass_id;
+    state->edges = prior_->Run(input);
+  }
+
+  void WritePreview(const Level& level, const Problem& problem, const PixelState& state) {
+    if (state.edges.empty()) {
+      std::printf("  no segmentation prior edges for %s (no deformable pass made any)\n",
+                  views_[problem.ref].name.c_str());
+    }
+    sink_.WritePriorPreview(problem.ref, level.color.at(problem.ref),
+                            UnpackEdgeBit(state.edges, kAggregatedEdge),
+                            UnpackEdgeBit(state.edges, kRefinedEdge));
   }
 
   // The state a problem starts a pass with: fresh (first pass overall),
@@ -287,6 +373,8 @@ class CpuRunner {
   StateCache cache_;
   std::vector<int> run_;
   std::unique_ptr<Level> coarser_;
+  std::unique_ptr<PriorDriver> prior_;  // null = no segmentation prior
+  std::vector<uint8_t> confining_;      // scratch: the confining bit of the current image
   std::chrono::steady_clock::time_point start_;
 };
 

@@ -1,5 +1,7 @@
 // Host storage of one image's per-pixel PatchMatch state: the plane (depth +
-// normal), the aggregated cost and the selected-view mask. 24 bytes per pixel.
+// normal), the aggregated cost and the selected-view mask, 24 bytes per
+// pixel, plus the segmentation prior's edge map (1 byte per pixel) once the
+// prior has run for the image.
 #pragma once
 
 #include <cstddef>
@@ -17,6 +19,10 @@ struct PixelState {
   std::vector<float> normal;  // 3 planes: nx, ny, nz
   std::vector<float> cost;
   std::vector<uint32_t> mask;
+  // Depth edges of the segmentation prior (bits of prior_edges.h); empty
+  // until the prior first runs. Kept here so it spills and upsamples with
+  // the planes it belongs to.
+  std::vector<uint8_t> edges;
 
   PixelState() = default;
   PixelState(int w, int h)
@@ -30,7 +36,7 @@ struct PixelState {
   bool Empty() const { return depth.empty(); }
   size_t Bytes() const {
     return depth.size() * sizeof(float) + normal.size() * sizeof(float) +
-           cost.size() * sizeof(float) + mask.size() * sizeof(uint32_t);
+           cost.size() * sizeof(float) + mask.size() * sizeof(uint32_t) + edges.size();
   }
   core::PlaneHypothesis Plane(size_t i) const {
     const size_t n = depth.size();

@@ -54,6 +54,12 @@ PixelState& StateCache::Get(int id) {
     ReadVector(in, &state.normal);
     ReadVector(in, &state.cost);
     ReadVector(in, &state.mask);
+    int has_edges = 0;
+    in.read(reinterpret_cast<char*>(&has_edges), sizeof(has_edges));
+    if (has_edges) {
+      state.edges.resize(state.depth.size());
+      ReadVector(in, &state.edges);
+    }
     if (!in) throw std::runtime_error("cannot read spilled state " + sp->second);
     std::remove(sp->second.c_str());
     spilled_.erase(sp);
@@ -101,6 +107,9 @@ void StateCache::Spill(int id) {
   WriteVector(out, it->second.normal);
   WriteVector(out, it->second.cost);
   WriteVector(out, it->second.mask);
+  const int has_edges = it->second.edges.empty() ? 0 : 1;
+  out.write(reinterpret_cast<const char*>(&has_edges), sizeof(has_edges));
+  WriteVector(out, it->second.edges);
   if (!out) throw std::runtime_error("cannot spill state to " + path + " (disk full?)");
   resident_bytes_ -= it->second.Bytes();
   resident_.erase(it);

@@ -2,6 +2,7 @@
 // schedule and hands finished maps to a sink. Knows nothing of files.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,13 @@ class MapSink {
   // normal: 3 channels, unit, camera frame, (0,0,0) where depth is 0.
   virtual void Write(int view, const std::string& type, const DenseMap& depth,
                      const DenseMap& normal) = 0;
+  // With --MspStereo.write_previews: the final pass's image `color` (RGB) and
+  // the segmentation prior's aggregated and refined edge maps (0/1, either
+  // may be empty) that confined its anchors. A sink that keeps no pictures
+  // ignores them.
+  virtual void WritePriorPreview(int /*view*/, const DenseMap& /*color*/,
+                                 const std::vector<uint8_t>& /*aggregated_edges*/,
+                                 const std::vector<uint8_t>& /*refined_edges*/) {}
 };
 
 // Runs the configured back-end. `scratch_dir` is where per-image state may be

@@ -14,6 +14,7 @@
 #include "core/hd.h"
 #include "core/plane.h"
 #include "core/rng.h"
+#include "core/segment_crossing.h"
 #include "core/vec.h"
 
 namespace msp {
@@ -51,14 +52,26 @@ struct AnchorParams {
 };
 
 // What the search reads: the classes of the last pass, the nearest-reliable
-// map (index or -1) and the depths of the reference image.
+// map (index or -1), the depths of the reference image and the depth edges of
+// the segmentation prior (same size; edges.data == nullptr = unconfined, as
+// in APD-MVS and the ablation "w/o Mul.").
 struct AnchorMaps {
   const uint8_t* classes;
   const int* nearest;
   const float* depth;
   int width;
   int height;
+  BoundaryView edges;
 };
+
+MSP_HD bool IsConfined(const AnchorMaps& maps) { return maps.edges.data != nullptr; }
+
+// Paper "Edge Aggregation": the anchor s is admissible for p only if the
+// line p -> s crosses no edge of B'.
+MSP_HD bool CrossesDepthEdge(const AnchorMaps& maps, int col, int row, int q) {
+  return IsConfined(maps) &&
+         SegmentCrossesBoundary(maps.edges, col, row, q % maps.width, q / maps.width);
+}
 
 // The anchors of one pixel and the RANSAC plane n^T X + plane_dist = 0
 // (reference camera frame, n unit and facing the camera at p).
@@ -113,7 +126,9 @@ MSP_HD bool Contains(const int* values, int n, int v) {
 
 // The reliable pixel hit by one ray of sector `sector`, or -1. A hit already
 // taken by another ray (neighbouring rays often snap to the same pixel) does
-// not stop the ray: it walks on to find a distinct one.
+// not stop the ray: it walks on to find a distinct one. When confined, the
+// ray ends at the first ray position behind a depth edge (every farther one
+// is behind it too), and a snapped hit behind an edge is skipped.
 MSP_HD int CastAnchorRay(const AnchorMaps& maps, int col, int row, int sector, float angle,
                          int max_distance, const int* taken, int num_taken) {
   const float dx = cosf(angle), dy = sinf(angle);
@@ -124,6 +139,7 @@ MSP_HD int CastAnchorRay(const AnchorMaps& maps, int col, int row, int sector, f
     const int r = static_cast<int>(floorf(row + dy * radius + 0.5f));
     if (c < 0 || r < 0 || c >= maps.width || r >= maps.height) return -1;
     int q = r * maps.width + c;
+    if (CrossesDepthEdge(maps, col, row, q)) return -1;
     if (maps.classes[q] != kReliable) {
       q = maps.nearest[q];
       if (q < 0) continue;
@@ -132,6 +148,7 @@ MSP_HD int CastAnchorRay(const AnchorMaps& maps, int col, int row, int sector, f
       const float len2 = ox * ox + oy * oy;
       if (len2 > static_cast<float>(max_distance) * max_distance || len2 <= 0.0f) continue;
       if (ox * sx + oy * sy < kHalfSectorCos * sqrtf(len2)) continue;  // left the sector
+      if (CrossesDepthEdge(maps, col, row, q)) continue;
     }
     if (maps.depth[q] > 0.0f && !Contains(taken, num_taken, q)) return q;
   }

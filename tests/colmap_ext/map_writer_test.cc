@@ -8,6 +8,7 @@
 #include <string>
 
 #include "dense_map_io.h"
+#include "prior_previews.h"
 #include "workspace.h"
 
 namespace msp {
@@ -83,6 +84,21 @@ TEST_F(MapWriterTest, RejectsBackEndMistakes) {
   EXPECT_THROW(writer.Write(0, "geometric", Normal(), Depth(1.0f)), std::invalid_argument);
   EXPECT_THROW(writer.Write(0, "geometric", DenseMap(5, 3, 1), Normal()), std::invalid_argument);
   EXPECT_FALSE(fs::exists(workspace_ / "stereo"));  // nothing written
+}
+
+// The prior preview goes to <workspace>/stereo/prior_previews/<name>.png,
+// sub-folders included, and is a PNG of the image's size.
+TEST_F(MapWriterTest, WritesPriorPreviewUnderTheDocumentedPath) {
+  MapWriter writer(workspace_.string(), {"a.png", "sub/b.jpg"}, true);
+  DenseMap color(4, 3, 3, 0.5f);
+  std::vector<uint8_t> aggregated(12, 0), refined(12, 0);
+  aggregated[1] = refined[1] = refined[2] = 1;
+  writer.WritePriorPreview(1, color, aggregated, refined);
+  const fs::path path = workspace_ / "stereo/prior_previews/sub/b.jpg.png";
+  EXPECT_EQ(PriorPreviewPath(workspace_.string(), "sub/b.jpg"), path.string());
+  ASSERT_TRUE(fs::is_regular_file(path));
+  EXPECT_GT(fs::file_size(path), 0u);
+  EXPECT_THROW(writer.WritePriorPreview(2, color, aggregated, refined), std::invalid_argument);
 }
 
 }  // namespace

@@ -346,6 +346,52 @@ TEST(Workspace, MaxImageSizeDownsizes) {
   EXPECT_EQ(LoadWorkspace(options).views[0].gray.width, 32);
 }
 
+// Mask layers of the segmentation prior: a reference view with files gets
+// them at the working resolution, the others fall back to the embedded
+// segmenter; nothing is read with the prior off.
+TEST(Workspace, ReadsPriorMaskLayersOfReferenceViews) {
+  const TinyWorkspace tiny;
+  for (int level = 0; level < 2; ++level) {
+    cv::Mat layer(kHeight, kWidth, CV_16UC1);
+    for (int row = 0; row < kHeight; ++row) {
+      for (int col = 0; col < kWidth; ++col) {
+        layer.at<uint16_t>(row, col) = col < 8 * (level + 1) ? 1 : 2 + level;
+      }
+    }
+    const std::string path = tiny.Path("masks/sub/img0.png." + std::to_string(level) + ".png");
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+    ASSERT_TRUE(cv::imwrite(path, layer));
+  }
+  StereoCommandOptions options = tiny.Options();
+  options.patch_match.max_image_size = 16;  // 32x24 -> 16x12
+  const Workspace ws = LoadWorkspace(options);
+  const ImageLabelLayers& given = ws.views[0].mask_layers;
+  EXPECT_EQ(given.source, LabelSource::kMaskFiles);
+  ASSERT_EQ(given.layers.NumLevels(), 2);
+  EXPECT_EQ(given.layers.width, 16);
+  EXPECT_EQ(given.layers.height, 12);
+  EXPECT_EQ(given.layers.At(0, 5, 3), 1);
+  EXPECT_EQ(given.layers.At(0, 5, 4), 2);
+  EXPECT_EQ(given.layers.At(1, 5, 7), 1);
+  EXPECT_EQ(given.layers.At(1, 5, 8), 3);
+  for (int i = 1; i < 3; ++i) {
+    EXPECT_EQ(ws.views[i].mask_layers.source, LabelSource::kEmbeddedSegmenter);
+    EXPECT_TRUE(ws.views[i].mask_layers.layers.levels.empty());
+  }
+
+  // --MspStereo.mask_path elsewhere: no files there, every view falls back.
+  options.msp.mask_path = tiny.Path("no_masks_here");
+  EXPECT_EQ(LoadWorkspace(options).views[0].mask_layers.source, LabelSource::kEmbeddedSegmenter);
+
+  // A bad layer stops the run when the prior is on, and is not read when off.
+  options.msp.mask_path = "";
+  ASSERT_TRUE(cv::imwrite(tiny.Path("masks/img1.png.0.png"), cv::Mat(kHeight, kWidth, CV_8UC1)));
+  ASSERT_TRUE(cv::imwrite(tiny.Path("masks/img1.png.1.png"), cv::Mat(kHeight, kWidth, CV_16UC1)));
+  EXPECT_CONTAINS(tiny.LoadError(options), "img1.png.0.png: mask layer is a 8-bit");
+  options.msp.segmentation_prior = false;
+  EXPECT_TRUE(LoadWorkspace(options).views[0].mask_layers.layers.levels.empty());
+}
+
 TEST(Workspace, DownsizedSize) {
   int w = 0, h = 0;
   DownsizedSize(6000, 4000, 2000, &w, &h);

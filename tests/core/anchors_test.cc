@@ -49,7 +49,8 @@ struct Layout {
   }
 
   AnchorMaps Maps() const {
-    return AnchorMaps{classes.data(), nearest.data(), depth.data(), kSize, kSize};
+    return AnchorMaps{classes.data(), nearest.data(), depth.data(), kSize, kSize,
+                      BoundaryView{nullptr, 0, 0, 0}};
   }
 
   bool Find(int round, AnchorSet* out, uint64_t key = 7) const {
@@ -57,7 +58,23 @@ struct Layout {
     return FindAnchors(cam, Maps(), kCol, kRow,
                        DefaultAnchorParams(round, kDepthRange, kMaxDistance), &rng, out);
   }
+
+  // The same search confined by the depth-edge map `edges` (1 = edge).
+  bool FindConfined(const std::vector<uint8_t>& edges, AnchorSet* out) const {
+    AnchorMaps maps = Maps();
+    maps.edges = BoundaryView{edges.data(), kSize, kSize, kSize};
+    Rng rng = MakeRng(7);
+    return FindAnchors(cam, maps, kCol, kRow, DefaultAnchorParams(0, kDepthRange, kMaxDistance),
+                       &rng, out);
+  }
 };
+
+// A vertical depth edge (2 px wide, as boundary maps are) at columns x, x+1.
+std::vector<uint8_t> VerticalEdge(int x) {
+  std::vector<uint8_t> edges(kSize * kSize, 0);
+  for (int r = 0; r < kSize; ++r) edges[r * kSize + x] = edges[r * kSize + x + 1] = 1;
+  return edges;
+}
 
 // Reliable outside a disk of radius 20 around p: a textureless blob.
 bool OutsideDisk(int dx, int dy, float) { return dx * dx + dy * dy > 20 * 20; }
@@ -175,6 +192,68 @@ TEST(Anchors, TrianglesMustContainThePixel) {
   EXPECT_EQ(a.num_sectors, 4);
   EXPECT_EQ(a.num_inliers, 0);
   EXPECT_EQ(a.count, 0);
+}
+
+// Edge confinement (paper "Edge Aggregation"): the reliable pixels right of a
+// depth edge 15 px east of p are ray hits of the unconfined search and none
+// of the confined one; those on p's side stay hits and anchors.
+TEST(Anchors, DepthEdgeRejectsHitsBehindItAndKeepsThoseInside) {
+  constexpr int kEdgeCol = kCol + 15;
+  Layout layout;
+  layout.Fill(OutsideDisk);
+  const AnchorParams params = DefaultAnchorParams(0, kDepthRange, kMaxDistance);
+  const std::vector<uint8_t> edges = VerticalEdge(kEdgeCol);
+  AnchorMaps confined_maps = layout.Maps();
+  confined_maps.edges = BoundaryView{edges.data(), kSize, kSize, kSize};
+
+  int free_hits[kMaxAnchorHits], confined_hits[kMaxAnchorHits];
+  int free_sectors = 0, confined_sectors = 0;
+  const int num_free = CollectAnchorHits(layout.Maps(), kCol, kRow, params, free_hits, &free_sectors);
+  const int num_confined =
+      CollectAnchorHits(confined_maps, kCol, kRow, params, confined_hits, &confined_sectors);
+  int behind = 0;
+  for (int k = 0; k < num_free; ++k) behind += free_hits[k] % kSize >= kEdgeCol;
+  ASSERT_GT(behind, 0) << "the unconfined search must reach behind the edge";
+  EXPECT_EQ(free_sectors, kNumSectors);
+  EXPECT_EQ(confined_sectors, kNumSectors - 1);  // the east sector lies behind the edge
+  // Every hit on p's side is kept, every hit behind the edge is gone.
+  EXPECT_EQ(num_confined, num_free - behind);
+  for (int k = 0; k < num_confined; ++k) EXPECT_LT(confined_hits[k] % kSize, kEdgeCol);
+
+  AnchorSet confined;
+  ASSERT_TRUE(layout.FindConfined(edges, &confined));
+  ASSERT_EQ(confined.count, kMaxAnchors);
+  for (int k = 0; k < confined.count; ++k) {
+    EXPECT_LT(confined.cols[k], kEdgeCol) << "anchor " << confined.cols[k] << "," << confined.rows[k];
+  }
+  // The confined anchors still span the true plane through p.
+  EXPECT_NEAR(AnchorPlaneHypothesis(layout.cam, confined, kCol, kRow).depth,
+              layout.TrueDepth(kCol, kRow), 1e-3f);
+
+  // A confined search on an edge map without edges is the unconfined one.
+  AnchorSet free_set, no_edges;
+  ASSERT_TRUE(layout.Find(0, &free_set));
+  ASSERT_TRUE(layout.FindConfined(std::vector<uint8_t>(kSize * kSize, 0), &no_edges));
+  ASSERT_EQ(no_edges.count, free_set.count);
+  for (int k = 0; k < no_edges.count; ++k) {
+    EXPECT_EQ(no_edges.cols[k], free_set.cols[k]);
+    EXPECT_EQ(no_edges.rows[k], free_set.rows[k]);
+  }
+}
+
+// A snapped hit behind an edge is skipped, not taken: reliable pixels only on
+// a ring (reached by snapping), with an edge cutting the ring's east side.
+TEST(Anchors, SnappedHitsBehindAnEdgeAreSkipped) {
+  Layout layout;
+  layout.Fill([](int dx, int dy, float) {
+    const int d2 = dx * dx + dy * dy;
+    return d2 >= 29 * 29 && d2 <= 31 * 31;
+  });
+  constexpr int kEdgeCol = kCol + 20;
+  AnchorSet confined;
+  layout.FindConfined(VerticalEdge(kEdgeCol), &confined);
+  EXPECT_LT(confined.num_sectors, kNumSectors);
+  for (int k = 0; k < confined.count; ++k) EXPECT_LT(confined.cols[k], kEdgeCol);
 }
 
 TEST(Anchors, SameKeySameAnchors) {

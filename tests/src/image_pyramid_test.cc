@@ -73,5 +73,23 @@ TEST(ImagePyramid, UpsampleKeepsTiltedPlane) {
   }
 }
 
+// Edge bits of the segmentation prior carry up by nearest neighbour: a coarse
+// edge pixel becomes the 2x2 fine pixels it covers; no edges stay no edges.
+TEST(ImagePyramid, UpsampleCarriesPriorEdgesByNearestNeighbour) {
+  const core::Camera fine = TestCamera(64, 48);
+  const core::Camera coarse = HalveCamera(fine, 32, 24);
+  PixelState state(32, 24);
+  EXPECT_TRUE(UpsampleState(state, coarse, fine).edges.empty());
+  state.edges.assign(32 * 24, 0);
+  for (int r = 0; r < 24; ++r) state.edges[r * 32 + 10] = 3;  // a vertical edge at coarse col 10
+  const PixelState up = UpsampleState(state, coarse, fine);
+  ASSERT_EQ(up.edges.size(), 64u * 48u);
+  for (int r = 0; r < 48; ++r) {
+    for (int c = 0; c < 64; ++c) {
+      EXPECT_EQ(up.edges[r * 64 + c], (c == 20 || c == 21) ? 3 : 0) << c << "," << r;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace msp

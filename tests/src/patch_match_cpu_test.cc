@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "label_layers.h"
 #include "synthetic_views.h"
 
 namespace msp {
@@ -21,7 +22,14 @@ class MemorySink : public MapSink {
              const DenseMap& normal) override {
     maps[{view, type}] = {depth, normal};
   }
+  void WritePriorPreview(int view, const DenseMap& color, const std::vector<uint8_t>& aggregated,
+                         const std::vector<uint8_t>& refined) override {
+    previews[view] = {aggregated, refined};
+    preview_sizes[view] = {color.width, color.height};
+  }
   std::map<std::pair<int, std::string>, std::pair<DenseMap, DenseMap>> maps;
+  std::map<int, std::pair<std::vector<uint8_t>, std::vector<uint8_t>>> previews;
+  std::map<int, std::pair<int, int>> preview_sizes;
   std::map<int, bool> done;
 };
 
@@ -73,6 +81,82 @@ TEST(PatchMatchCpu, RecoversFrontoParallelPlane) {
   EXPECT_GT(valid, 0.9 * total);
   EXPECT_GT(accurate, 0.95 * valid);
   EXPECT_TRUE(sink.maps.count({0, std::string("photometric")}));
+}
+
+// With the segmentation prior on (the default) and off: the same seed gives
+// the same maps on 1 and 2 threads.
+TEST(PatchMatchCpu, DeterministicAcrossThreadCountsWithAndWithoutPrior) {
+  const std::vector<View> views =
+      testing_support::RenderFrontoParallelPlane(48, 40, 3, kPlaneDepth, 0.25f);
+  const std::vector<Problem> problems = AllProblems(3);
+  PatchMatchStereoOptions pm;
+  for (bool prior : {true, false}) {
+    MspStereoOptions msp;
+    msp.seed = 3;
+    msp.segmentation_prior = prior;
+    msp.write_previews = true;  // the edges that confined the last pass, to compare
+    MemorySink one, two;
+    msp.num_threads = 1;
+    RunPatchMatchCpu(views, problems, pm, msp, "/tmp", one);
+    msp.num_threads = 2;
+    RunPatchMatchCpu(views, problems, pm, msp, "/tmp", two);
+    ASSERT_EQ(one.maps.size(), two.maps.size());
+    for (const auto& entry : one.maps) {
+      EXPECT_EQ(entry.second.first.data, two.maps.at(entry.first).first.data) << "prior " << prior;
+      EXPECT_EQ(entry.second.second.data, two.maps.at(entry.first).second.data);
+    }
+    EXPECT_EQ(one.previews, two.previews);
+    if (!prior) {
+      EXPECT_TRUE(one.previews.empty());
+      continue;
+    }
+    ASSERT_EQ(one.previews.size(), 3u);
+    long long edge_pixels = 0;
+    for (const auto& preview : one.previews) {
+      for (uint8_t e : preview.second.second) edge_pixels += e;
+    }
+    EXPECT_GT(edge_pixels, 0) << "the prior must have made edges to confine with";
+  }
+}
+
+// A reference view with user mask layers uses them, not the embedded
+// segmenter: its one layer (two regions split at column kSplit) is the only
+// layer, so every region is kept and B' is exactly the split, 2 px wide.
+// Views without layers get the segmenter's edges. Previews show both.
+TEST(PatchMatchCpu, UserMaskLayersAreUsedOverTheEmbeddedSegmenter) {
+  constexpr int kWidth = 48, kHeight = 40, kSplit = 20;
+  std::vector<View> views = testing_support::RenderFrontoParallelPlane(kWidth, kHeight, 3,
+                                                                         kPlaneDepth, 0.25f);
+  LabelLayers layers;
+  layers.width = kWidth;
+  layers.height = kHeight;
+  layers.levels.assign(1, std::vector<int32_t>(kWidth * kHeight));
+  for (int i = 0; i < kWidth * kHeight; ++i) layers.levels[0][i] = i % kWidth < kSplit ? 1 : 2;
+  views[0].mask_layers.source = LabelSource::kMaskFiles;
+  views[0].mask_layers.layers = layers;
+  PatchMatchStereoOptions pm;
+  MspStereoOptions msp;
+  msp.write_previews = true;
+  msp.edge_refinement = false;  // B' itself confines
+  MemorySink sink;
+  RunPatchMatchCpu(views, AllProblems(3), pm, msp, "/tmp", sink);
+  ASSERT_EQ(sink.previews.size(), 3u);
+  const std::vector<uint8_t>& aggregated = sink.previews.at(0).first;
+  ASSERT_EQ(aggregated.size(), static_cast<size_t>(kWidth * kHeight));
+  EXPECT_TRUE(sink.previews.at(0).second.empty() ||
+              std::count(sink.previews.at(0).second.begin(), sink.previews.at(0).second.end(),
+                         1) == 0);  // no refined edges without the CRF
+  EXPECT_EQ(sink.preview_sizes.at(0), std::make_pair(kWidth, kHeight));
+  for (int i = 0; i < kWidth * kHeight; ++i) {
+    const int col = i % kWidth;
+    EXPECT_EQ(aggregated[i], (col == kSplit - 1 || col == kSplit) ? 1 : 0) << i;
+  }
+  // The embedded segmenter on the others' colour images finds other edges.
+  for (int v = 1; v < 3; ++v) {
+    const std::vector<uint8_t>& edges = sink.previews.at(v).first;
+    ASSERT_EQ(edges.size(), static_cast<size_t>(kWidth * kHeight));
+    EXPECT_NE(edges, aggregated);
+  }
 }
 
 TEST(PatchMatchCpu, DeterministicAcrossThreadCounts) {

@@ -60,13 +60,20 @@ std::vector<View> RenderFrontoParallelPlane(int width, int height, int num_views
     view.name = "view_" + std::to_string(v) + ".png";
     view.camera = MakeTestCamera(width, height, center);
     view.gray = DenseMap(width, height, 1);
+    view.color = DenseMap(width, height, 3);
     for (int r = 0; r < height; ++r) {
       for (int c = 0; c < width; ++c) {
         const core::Vec3 ray = core::ViewRay(view.camera, static_cast<float>(c), static_cast<float>(r));
         // Camera frame is the world frame shifted by the centre (R = I).
         const float X = center.x + ray.x * plane_depth;
         const float Y = center.y + ray.y * plane_depth;
-        view.gray.At(r, c) = Texture(X, Y);
+        const float g = Texture(X, Y);
+        view.gray.At(r, c) = g;
+        // Hue varies with the texture, so the segmenter and the CRF colour
+        // term (normalised RGB) see regions.
+        view.color.At(r, c, 0) = g;
+        view.color.At(r, c, 1) = 1.0f - g;
+        view.color.At(r, c, 2) = 0.5f;
       }
     }
     views.push_back(std::move(view));

@@ -84,8 +84,7 @@ void Run(int width, int height, int num_views, bool ncc_only) {
         const float dist = core::PlaneDistance(p.ref_camera, c, r, h);
         for (int j = 0; j < p.num_src; ++j) {
           const core::SourceView& s = p.src[j];
-          const core::Mat3 H =
-              core::ComputeHomography(p.ref_camera, s.rel, h.normal, dist);
+          const core::Mat3 H = core::ComputeHomography(p.ref_camera, s.rel, h.normal, dist);
           sink += fast ? core::WindowNccCost(w, p.ref_image, s.image, H, p.ncc)
                        : core::NccCost(p.ref_image, s.image, H, c, r, p.ncc);
           ++evaluations;

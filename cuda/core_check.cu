@@ -49,9 +49,8 @@ __global__ void CheckerboardKernel(const core::PassParams* params, int color, in
 // Deformable iteration of one colour: unreliable pixels with anchors take the
 // deformable update (APD), the others the conventional one.
 __global__ void DeformableKernel(const core::PassParams* params, const core::AnchorMaps* maps,
-                                 const core::AnchorParams* anchor_params,
-                                 core::PlaneMapView planes, core::DeformableParams cost, int color,
-                                 int iteration) {
+                                 const core::AnchorParams* anchor_params, core::PlaneMapView planes,
+                                 core::DeformableParams cost, int color, int iteration) {
   const int col = blockIdx.x * blockDim.x + threadIdx.x;
   const int row = blockIdx.y * blockDim.y + threadIdx.y;
   if (col >= params->state.width || row >= params->state.height) return;
@@ -87,8 +86,8 @@ dim3 GridFor(int width, int height) {
 
 void LaunchCheckerboard(const core::PassParams* device_params, int width, int height, int color,
                         int iteration) {
-  CheckerboardKernel<<<GridFor(width, height), dim3(kBlockSide, kBlockSide)>>>(device_params,
-                                                                              color, iteration);
+  CheckerboardKernel<<<GridFor(width, height), dim3(kBlockSide, kBlockSide)>>>(device_params, color,
+                                                                               iteration);
 }
 
 void LaunchDeformable(const core::PassParams* device_params, const core::AnchorMaps* device_maps,

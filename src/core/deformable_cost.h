@@ -66,8 +66,7 @@ MSP_HD float DeformableViewCost(const PassParams& p, const DeformableWindows& w,
   if (w.anchors.count > 0) {
     // H maps every reference pixel on p's plane: an anchor window is the
     // part of p's (deformed) patch that lies around the anchor.
-    const float sum =
-        AnchorCostSum(w.anchors, p.ref_image, s.image, H, AnchorNccParams(p.ncc, d));
+    const float sum = AnchorCostSum(w.anchors, p.ref_image, s.image, H, AnchorNccParams(p.ncc, d));
     cost = d.lambda * cost + (1.0f - d.lambda) * (sum / w.anchors.count);
   }
   return cost + GeometricTerm(p, j, w.centre.col, w.centre.row, plane.point);

@@ -15,9 +15,9 @@
 #include "core/limits.h"
 #include "core/ncc.h"
 #include "core/plane.h"
-#include "core/window_cost.h"
 #include "core/rng.h"
 #include "core/view_selection.h"
+#include "core/window_cost.h"
 
 namespace msp {
 namespace core {
@@ -32,7 +32,7 @@ struct SourceView {
   Camera camera;
   RelativePose rel;  // reference camera frame -> this camera's frame
   ImageView image;
-  ImageView depth;   // previous-pass depth (geometric passes), else data == nullptr
+  ImageView depth;  // previous-pass depth (geometric passes), else data == nullptr
 };
 
 // Per-pixel state of the reference image: plane, aggregated cost, view mask.
@@ -96,11 +96,10 @@ struct PreparedPlane {
   Vec3 point;
 };
 
-MSP_HD PreparedPlane PreparePlane(const PassParams& p, int col, int row,
-                                  const PlaneHypothesis& h) {
+MSP_HD PreparedPlane PreparePlane(const PassParams& p, int col, int row, const PlaneHypothesis& h) {
   PreparedPlane prepared;
-  const Vec3 X = BackProject(p.ref_camera, static_cast<float>(col), static_cast<float>(row),
-                             h.depth);
+  const Vec3 X =
+      BackProject(p.ref_camera, static_cast<float>(col), static_cast<float>(row), h.depth);
   const float dist = -Dot(h.normal, X);  // PlaneDistance
   prepared.valid = dist > 0.0f;
   if (!prepared.valid) return prepared;
@@ -113,8 +112,8 @@ MSP_HD PreparedPlane PreparePlane(const PassParams& p, int col, int row,
 MSP_HD float GeometricTerm(const PassParams& p, int j, int col, int row, const Vec3& point) {
   const SourceView& s = p.src[j];
   if (!p.geometric || s.depth.data == nullptr) return 0.0f;
-  return p.geom_lambda * ReprojectionErrorOfPoint(p.ref_camera, s.camera, s.depth, col, row,
-                                                  point, p.geom_max_error);
+  return p.geom_lambda * ReprojectionErrorOfPoint(p.ref_camera, s.camera, s.depth, col, row, point,
+                                                  p.geom_max_error);
 }
 
 // Cost of a prepared hypothesis at the centre of window w in source view j.
@@ -222,8 +221,7 @@ MSP_HD PlaneHypothesis RefinementCandidate(const PassParams& p, int col, int row
                                            const PlaneHypothesis& cur, int k, Rng* rng) {
   const Camera& cam = p.ref_camera;
   PlaneHypothesis h = cur;
-  const float pert_depth =
-      cur.depth * (1.0f + rng->Uniform(-p.perturb_depth, p.perturb_depth));
+  const float pert_depth = cur.depth * (1.0f + rng->Uniform(-p.perturb_depth, p.perturb_depth));
   switch (k) {
     case 0:  // perturbed depth and normal
       h.depth = pert_depth;
@@ -270,7 +268,8 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
       for (int j = 0; j < p.num_src; ++j) row_costs[j] = kMaxCost;
     }
   }
-  Rng select_rng = MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamSelect, pixel));
+  Rng select_rng =
+      MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamSelect, pixel));
   float weights[kMaxSourceViews];
   const uint32_t mask = SelectViews(costs, kNumPropagationCandidates, p.num_src, kMaxSourceViews,
                                     iteration, s.mask[i], p.num_samples, &select_rng, weights);
@@ -295,7 +294,8 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
   } else {
     cur = cand[best];
   }
-  Rng refine_rng = MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamRefine, pixel));
+  Rng refine_rng =
+      MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamRefine, pixel));
   for (int k = 0; k < kNumRefinementCandidates; ++k) {
     const PlaneHypothesis h = RefinementCandidate(p, col, row, cur, k, &refine_rng);
     if (!DepthInRange(p, h.depth)) continue;

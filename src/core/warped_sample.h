@@ -73,15 +73,17 @@ inline WarpedCells WarpCells(const WarpLanes& w, __m256 x, __m256 y) {
   const __m256 zero = _mm256_setzero_ps();
   const __m256 hw = _mm256_fmadd_ps(w.h[6], x, _mm256_fmadd_ps(w.h[7], y, w.h[8]));
   const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), hw);
-  const __m256 u = _mm256_mul_ps(_mm256_fmadd_ps(w.h[0], x, _mm256_fmadd_ps(w.h[1], y, w.h[2])), inv);
-  const __m256 v = _mm256_mul_ps(_mm256_fmadd_ps(w.h[3], x, _mm256_fmadd_ps(w.h[4], y, w.h[5])), inv);
+  const __m256 u =
+      _mm256_mul_ps(_mm256_fmadd_ps(w.h[0], x, _mm256_fmadd_ps(w.h[1], y, w.h[2])), inv);
+  const __m256 v =
+      _mm256_mul_ps(_mm256_fmadd_ps(w.h[3], x, _mm256_fmadd_ps(w.h[4], y, w.h[5])), inv);
   // Ordered compares are false for NaN, so a degenerate warp fails too.
   WarpedCells c;
   c.inside = _mm256_and_ps(
       _mm256_and_ps(_mm256_cmp_ps(hw, zero, _CMP_GT_OQ), _mm256_cmp_ps(u, zero, _CMP_GE_OQ)),
-      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(v, zero, _CMP_GE_OQ),
-                                  _mm256_cmp_ps(u, w.max_u, _CMP_LT_OQ)),
-                    _mm256_cmp_ps(v, w.max_v, _CMP_LT_OQ)));
+      _mm256_and_ps(
+          _mm256_and_ps(_mm256_cmp_ps(v, zero, _CMP_GE_OQ), _mm256_cmp_ps(u, w.max_u, _CMP_LT_OQ)),
+          _mm256_cmp_ps(v, w.max_v, _CMP_LT_OQ)));
   const __m256 u_in = _mm256_and_ps(u, c.inside), v_in = _mm256_and_ps(v, c.inside);
   const __m256i c0 = _mm256_cvttps_epi32(u_in), r0 = _mm256_cvttps_epi32(v_in);
   c.fx = _mm256_sub_ps(u_in, _mm256_cvtepi32_ps(c0));

@@ -1,11 +1,10 @@
-#include "core/window_cost.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
 #include "core/rng.h"
+#include "core/window_cost.h"
 
 namespace msp {
 namespace core {
@@ -85,8 +84,8 @@ TEST(RefWindow, CostEqualsTheGeneralNcc) {
       RefWindow w;
       PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
       // The larger shifts push windows near the borders partly out of the source.
-      for (const Mat3& H : {Warp(0.3f, -0.4f), Warp(1.7f, 0.6f), Warp(-2.5f, 3.2f),
-                            Warp(-6.0f, 4.5f)}) {
+      for (const Mat3& H :
+           {Warp(0.3f, -0.4f), Warp(1.7f, 0.6f), Warp(-2.5f, 3.2f), Warp(-6.0f, 4.5f)}) {
         if (OnTheBorder(w, H)) continue;
         for (const std::vector<float>* s : {&src, &same}) {
           const float general = NccCost(View(ref), View(*s), H, col, row, kUniform);
@@ -100,7 +99,7 @@ TEST(RefWindow, CostEqualsTheGeneralNcc) {
       }
     }
   }
-  EXPECT_GT(fast, 100);   // most windows lay wholly inside the source
+  EXPECT_GT(fast, 100);    // most windows lay wholly inside the source
   EXPECT_GT(partial, 20);  // and partial windows were compared too
 }
 
@@ -136,7 +135,8 @@ TEST(RefWindow, SampleOutsideTheSourceRefusesTheFastPath) {
   RefWindow w;
   PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
   SourceSums sums;
-  const Mat3 near_right_edge = {{1, 0, kW - 1.0f - 25.5f, 0, 1, 0, 0, 0, 1}};  // last column at 46.5
+  const Mat3 near_right_edge = {
+      {1, 0, kW - 1.0f - 25.5f, 0, 1, 0, 0, 0, 1}};  // last column at 46.5
   EXPECT_TRUE(WindowSumsScalar(w, View(img), near_right_edge, &sums));
   const Mat3 on_right_edge = {{1, 0, kW - 1.0f - 25.0f, 0, 1, 0, 0, 0, 1}};  // last column at 47
   EXPECT_FALSE(WindowSumsScalar(w, View(img), on_right_edge, &sums));

@@ -1,6 +1,7 @@
 // Throughput of the CPU back-end's building blocks, for ratios between
 // versions and thread counts: NCC cost evaluations per second on one core,
-// and whole red-black iterations (pixels per second) on 1 and N threads.
+// the deformable cost against the conventional one, and whole red-black
+// iterations (pixels per second) on 1 and N threads.
 //
 //   msp_bench_patch_match [width height num_views [ncc]]
 #include <time.h>
@@ -11,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/deformable_cost.h"
 #include "core/patch_match_kernel.h"
 #include "parallel_for.h"
 #include "pixel_state.h"
@@ -59,6 +61,47 @@ core::PassParams MakeParams(const std::vector<View>& views, PixelState* state) {
   return p;
 }
 
+// The deformable cost (centre window + 8 anchor windows, paper eq. 3) against
+// the conventional one on the same pixels and views, one core: the ratio is
+// what a deformable update pays per view and candidate.
+void BenchDeformableCost(const core::PassParams& p, int width, int height) {
+  constexpr int kAnchorDistance = 12;  // pixels from the centre, one anchor per sector
+  const int dx[core::kMaxAnchors] = {1, 1, 0, -1, -1, -1, 0, 1};
+  const int dy[core::kMaxAnchors] = {0, 1, 1, 1, 0, -1, -1, -1};
+  const core::PlaneHypothesis h{2.0f, core::Vec3{0.0f, 0.0f, -1.0f}};
+  const core::DeformableParams d = core::DefaultDeformableParams();
+  double seconds[2] = {0.0, 0.0};
+  double sink = 0.0;
+  long evaluations = 0;
+  for (int r = kAnchorDistance; r < height - kAnchorDistance; ++r) {
+    for (int c = kAnchorDistance; c < width - kAnchorDistance; ++c) {
+      core::AnchorSet anchors{};
+      anchors.count = core::kMaxAnchors;
+      for (int a = 0; a < core::kMaxAnchors; ++a) {
+        anchors.cols[a] = c + kAnchorDistance * dx[a];
+        anchors.rows[a] = r + kAnchorDistance * dy[a];
+      }
+      core::DeformableWindows w;
+      core::PrepareDeformableWindows(p, c, r, anchors, d, &w);
+      const core::PreparedPlane plane = core::PreparePlane(p, c, r, h);
+      double t0 = ThreadCpuSeconds();
+      for (int j = 0; j < p.num_src; ++j) sink += core::ViewCost(p, w.centre, j, plane);
+      double t1 = ThreadCpuSeconds();
+      seconds[0] += t1 - t0;
+      for (int j = 0; j < p.num_src; ++j) sink += core::DeformableViewCost(p, w, j, plane, d);
+      seconds[1] += ThreadCpuSeconds() - t1;
+      evaluations += p.num_src;
+    }
+  }
+  std::printf(
+      "deformable cost: %.3g evaluations/s on one core (centre + %d anchor windows of %d samples), "
+      "%.2fx the conventional cost's time [%g]\n",
+      evaluations / seconds[1], core::kMaxAnchors,
+      (2 * d.anchor_window_radius / d.anchor_window_step + 1) *
+          (2 * d.anchor_window_radius / d.anchor_window_step + 1),
+      seconds[1] / seconds[0], sink > 0 ? 1.0 : 0.0);
+}
+
 void Run(int width, int height, int num_views, bool ncc_only) {
   const std::vector<View> views =
       testing_support::RenderFrontoParallelPlane(width, height, num_views, 2.0f, 0.3f);
@@ -100,6 +143,7 @@ void Run(int width, int height, int num_views, bool ncc_only) {
   std::printf("ncc fast / general: %.2fx (vector path: %s)\n", rate[1] / rate[0],
               kVectorPath ? "AVX2" : "off");
 
+  BenchDeformableCost(p, width, height);
   if (ncc_only) return;
   // Whole iterations.
   const int threads_list[2] = {1, ResolveNumThreads(-1)};

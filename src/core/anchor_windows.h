@@ -115,7 +115,7 @@ inline void AnchorSumsAvx2(const AnchorWindows& w, const ImageView& src, const M
   for (int k = 0; k < w.num_samples; ++k) {
     const WarpedCells cells = WarpCells(lanes, _mm256_loadu_ps(w.x[k]), _mm256_loadu_ps(w.y[k]));
     ok = _mm256_and_ps(ok, cells.inside);
-    const __m256 s = GatherBilinear(src, cells);
+    const __m256 s = GatherBilinearPairs(src, cells);
     sum_s = _mm256_add_ps(sum_s, s);
     sum_ss = _mm256_fmadd_ps(s, s, sum_ss);
     sum_rs = _mm256_fmadd_ps(_mm256_loadu_ps(w.value[k]), s, sum_rs);
@@ -136,6 +136,26 @@ MSP_HD void AnchorSumsOf(const AnchorWindows& w, const ImageView& src, const Mat
 #endif
 }
 
+// 1 - NCC of every anchor from its source sums (NccFromSourceSums per lane).
+MSP_HD void AnchorNccCosts(const AnchorSums& sums, int num_samples, float* costs) {
+#if defined(MSP_WINDOW_SUMS_AVX2)
+  const __m256 n = _mm256_set1_ps(static_cast<float>(num_samples));
+  const __m256 s = _mm256_loadu_ps(sums.s), rs = _mm256_loadu_ps(sums.rs);
+  const __m256 spread = _mm256_fnmadd_ps(s, _mm256_div_ps(s, n), _mm256_loadu_ps(sums.ss));
+  const __m256 textured =
+      _mm256_cmp_ps(spread, _mm256_mul_ps(_mm256_set1_ps(kMinNccVariance), n), _CMP_GE_OQ);
+  const __m256 max_cost = _mm256_set1_ps(kMaxCost);
+  __m256 cost = _mm256_sub_ps(_mm256_set1_ps(1.0f), _mm256_div_ps(rs, _mm256_sqrt_ps(spread)));
+  cost = _mm256_min_ps(_mm256_max_ps(cost, _mm256_setzero_ps()), max_cost);
+  // Untextured lanes (and the NaN of a negative spread) cost kMaxCost.
+  _mm256_storeu_ps(costs, _mm256_blendv_ps(max_cost, cost, textured));
+#else
+  for (int a = 0; a < kMaxAnchors; ++a) {
+    costs[a] = NccFromSourceSums(SourceSums{sums.s[a], sums.ss[a], sums.rs[a]}, num_samples);
+  }
+#endif
+}
+
 // Sum over the anchors of 1 - NCC of each anchor window under H; `anchor_ncc`
 // (uniform weights, the anchor window's radius and step) serves the windows
 // that take the general path.
@@ -143,6 +163,8 @@ MSP_HD float AnchorCostSum(const AnchorWindows& w, const ImageView& ref, const I
                            const Mat3& H, const NccParams& anchor_ncc) {
   AnchorSums sums;
   AnchorSumsOf(w, src, H, &sums);
+  float costs[kMaxAnchors];
+  AnchorNccCosts(sums, w.num_samples, costs);
   float total = 0.0f;
   for (int a = 0; a < w.count; ++a) {
     if (!((sums.inside >> a) & 1u)) {
@@ -150,7 +172,7 @@ MSP_HD float AnchorCostSum(const AnchorWindows& w, const ImageView& ref, const I
     } else if (!((w.textured >> a) & 1u)) {
       total += kMaxCost;
     } else {
-      total += NccFromSourceSums(SourceSums{sums.s[a], sums.ss[a], sums.rs[a]}, w.num_samples);
+      total += costs[a];
     }
   }
   return total;

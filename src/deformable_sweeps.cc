@@ -1,6 +1,7 @@
 #include "deformable_sweeps.h"
 
 #include <atomic>
+#include <chrono>
 
 #include "core/deformable_update.h"
 #include "nearest_reliable.h"
@@ -8,6 +9,10 @@
 
 namespace msp {
 namespace {
+
+double SecondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
 
 // Anchor RANSAC draws get their own streams: the seed is salted so they never
 // coincide with the propagation / refinement streams of the same pixel.
@@ -26,9 +31,9 @@ core::PriorAnchors ToPriorAnchors(const core::Camera& cam, const core::AnchorSet
   for (int k = 0; k < set.count; ++k) {
     out.cols[k] = set.cols[k];
     out.rows[k] = set.rows[k];
-    out.points[k] = core::BackProject(cam, static_cast<float>(set.cols[k]),
-                                      static_cast<float>(set.rows[k]),
-                                      depth[set.rows[k] * width + set.cols[k]]);
+    out.points[k] =
+        core::BackProject(cam, static_cast<float>(set.cols[k]), static_cast<float>(set.rows[k]),
+                          depth[set.rows[k] * width + set.cols[k]]);
   }
   return out;
 }
@@ -62,9 +67,8 @@ ReliabilityMaps ClassifyState(const core::PassParams& params, const core::Reliab
 }
 
 DeformableStats RunDeformableCheckerboardIterations(
-    const core::PassParams& params, const ReliabilityMaps& maps,
-    const DeformableSettings& settings, int num_iterations, int num_threads,
-    std::vector<core::PriorAnchors>* prior_anchors) {
+    const core::PassParams& params, const ReliabilityMaps& maps, const DeformableSettings& settings,
+    int num_iterations, int num_threads, std::vector<core::PriorAnchors>* prior_anchors) {
   const core::PixelStateView& s = params.state;
   const int width = s.width, height = s.height;
   const size_t n = static_cast<size_t>(width) * height;
@@ -75,17 +79,17 @@ DeformableStats RunDeformableCheckerboardIterations(
     if (maps.classes[i] == core::kUnreliable) slot[i] = num_slots++;
   }
   std::vector<core::AnchorSet> anchors(num_slots);
+  std::vector<core::AnchorHits> hits(num_slots);
   std::vector<float> depth(n), normal(3 * n);
   const core::PlaneMapView planes{depth.data(), normal.data(), width, height};
-  const core::AnchorMaps anchor_maps{maps.classes.data(), maps.nearest.data(), depth.data(),
-                                     width,
-                                     height,
-                                     settings.edges};
+  const core::AnchorMaps anchor_maps{
+      maps.classes.data(), maps.nearest.data(), depth.data(), width, height, settings.edges};
   DeformableStats stats;
   for (int iteration = 0; iteration < num_iterations; ++iteration) {
     depth.assign(s.depth, s.depth + n);
     normal.assign(s.normal, s.normal + 3 * n);
     std::atomic<long long> anchored{0};
+    const auto anchors_start = std::chrono::steady_clock::now();
     ParallelFor(0, height, num_threads, [&](int row) {
       long long count = 0;
       for (int col = 0; col < width; ++col) {
@@ -94,13 +98,18 @@ DeformableStats RunDeformableCheckerboardIterations(
         core::Rng rng =
             core::MakeRng(core::RngKey(params.seed ^ kAnchorSeedSalt, params.image_id,
                                        params.pass_id, iteration, static_cast<uint32_t>(i)));
-        core::FindAnchors(params.ref_camera, anchor_maps, col, row, settings.anchors, &rng,
-                          &anchors[slot[i]]);
+        core::AnchorHits& cast = hits[slot[i]];
+        if (iteration == 0 || !core::HitsStillValid(anchor_maps, cast)) {
+          core::CastAnchorHits(anchor_maps, col, row, settings.anchors, &cast);
+        }
+        core::FitAnchors(params.ref_camera, anchor_maps, col, row, settings.anchors, cast, &rng,
+                         &anchors[slot[i]]);
         count += anchors[slot[i]].count > 0;
       }
       anchored += count;
     });
     stats.anchored_updates += anchored;
+    stats.anchor_seconds += SecondsSince(anchors_start);
     if (iteration == 0 && prior_anchors != nullptr) {
       prior_anchors->clear();
       for (size_t i = 0; i < n; ++i) {
@@ -110,6 +119,7 @@ DeformableStats RunDeformableCheckerboardIterations(
                                                 static_cast<int>(i / width)));
       }
     }
+    const auto sweep_start = std::chrono::steady_clock::now();
     for (int color = 0; color < 2; ++color) {
       ParallelFor(0, height, num_threads, [&](int row) {
         for (int col = (row + color) & 1; col < width; col += 2) {
@@ -123,6 +133,7 @@ DeformableStats RunDeformableCheckerboardIterations(
         }
       });
     }
+    stats.sweep_seconds += SecondsSince(sweep_start);
   }
   return stats;
 }

@@ -42,17 +42,19 @@ struct DeformableSettings {
 // Statistics of one call, for the log.
 struct DeformableStats {
   long long anchored_updates = 0;  // deformable pixel updates over all iterations
+  double anchor_seconds = 0.0;     // wall time of the anchor searches
+  double sweep_seconds = 0.0;      // wall time of the red-black sweeps
 };
 
 // `num_iterations` red-black iterations. Before each, the anchors of every
-// unreliable pixel are searched on a snapshot of the planes; during the
+// unreliable pixel are fitted on a snapshot of the planes (the rays are cast
+// once, in the first iteration: their hits do not change); during the
 // sweeps those pixels use the deformable update, the others the conventional.
 // When `prior_anchors` is given it receives, in pixel order, every unreliable
 // pixel with anchors in the first iteration: the anchors and their
 // camera-frame points on that snapshot (the input of eq. 4).
 DeformableStats RunDeformableCheckerboardIterations(
-    const core::PassParams& params, const ReliabilityMaps& maps,
-    const DeformableSettings& settings, int num_iterations, int num_threads,
-    std::vector<core::PriorAnchors>* prior_anchors = nullptr);
+    const core::PassParams& params, const ReliabilityMaps& maps, const DeformableSettings& settings,
+    int num_iterations, int num_threads, std::vector<core::PriorAnchors>* prior_anchors = nullptr);
 
 }  // namespace msp

@@ -43,7 +43,8 @@ struct Level {
 // geometric passes (the passes are Jacobi, so this is a closure).
 std::vector<int> ProblemsToRun(const std::vector<Problem>& problems, const MapSink& sink) {
   std::map<int, int> problem_of_view;
-  for (size_t k = 0; k < problems.size(); ++k) problem_of_view[problems[k].ref] = static_cast<int>(k);
+  for (size_t k = 0; k < problems.size(); ++k)
+    problem_of_view[problems[k].ref] = static_cast<int>(k);
   std::set<int> needed;
   std::vector<int> stack;
   for (size_t k = 0; k < problems.size(); ++k) {
@@ -85,7 +86,8 @@ class CpuRunner {
         threads_(ResolveNumThreads(msp.num_threads)),
         cache_(static_cast<size_t>(pm.cache_size * kBytesPerGigabyte), scratch_dir) {
     // The prior confines anchors, so it only runs with deformable patches.
-    if (msp.deformable && msp.segmentation_prior) prior_.reset(new PriorDriver(views, msp, threads_));
+    if (msp.deformable && msp.segmentation_prior)
+      prior_.reset(new PriorDriver(views, msp, threads_));
   }
 
   void Run() {
@@ -247,8 +249,8 @@ class CpuRunner {
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         std::printf("Round %d/%d, %s pass %d, image %zu/%zu [%s] %dx%d: %.2f s (elapsed %.1f s)\n",
-                    round + 1, num_rounds, geometric ? "geometric" : "photometric", pass + 1,
-                    n + 1, run_.size(), views_[problem.ref].name.c_str(), params.state.width,
+                    round + 1, num_rounds, geometric ? "geometric" : "photometric", pass + 1, n + 1,
+                    run_.size(), views_[problem.ref].name.c_str(), params.state.width,
                     params.state.height, seconds, Elapsed());
         std::fflush(stdout);
       }
@@ -269,7 +271,10 @@ class CpuRunner {
     reliability.max_minimum_cost = static_cast<float>(msp_.reliable_max_cost);
     reliability.single_min_cost = static_cast<float>(msp_.reliable_single_cost);
     reliability.min_spread = static_cast<float>(msp_.reliable_min_spread);
+    const auto classify_start = std::chrono::steady_clock::now();
     const ReliabilityMaps maps = ClassifyState(params, reliability, threads_);
+    const double classify_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - classify_start).count();
     DeformableSettings settings;
     settings.anchors = core::DefaultAnchorParams(round, params.depth_max - params.depth_min,
                                                  msp_.anchor_max_distance);
@@ -286,9 +291,12 @@ class CpuRunner {
     const DeformableStats stats = RunDeformableCheckerboardIterations(
         params, maps, settings, kIterationsPerPass, threads_, prior_anchors);
     const double pixels = static_cast<double>(maps.width) * maps.height;
-    std::printf("  reliable %.1f%%, unreliable %.1f%%, deformable updates %.1f%% of pixels\n",
-                100.0 * maps.num_reliable / pixels, 100.0 * maps.num_unreliable / pixels,
-                100.0 * stats.anchored_updates / (pixels * kIterationsPerPass));
+    std::printf(
+        "  reliable %.1f%%, unreliable %.1f%%, deformable updates %.1f%% of pixels; classification "
+        "%.2f s, anchor search %.2f s, sweeps %.2f s\n",
+        100.0 * maps.num_reliable / pixels, 100.0 * maps.num_unreliable / pixels,
+        100.0 * stats.anchored_updates / (pixels * kIterationsPerPass), classify_seconds,
+        stats.anchor_seconds, stats.sweep_seconds);
   }
 
   // The prior of one image after a deformable pass (algorithm.md 3.1-3.2): its
@@ -311,7 +319,8 @@ class CpuRunner {
     input.depth_min = problem.depth_min;
     input.depth_max = problem.depth_max;
     input.anchors = &anchors;
-    input.inlier_distance = core::AnchorInlierThreshold(round, problem.depth_max - problem.depth_min);
+    input.inlier_distance =
+        core::AnchorInlierThreshold(round, problem.depth_max - problem.depth_min);
     input.pass_id = pass_id;
     state->edges = prior_->Run(input);
   }

@@ -115,7 +115,7 @@ inline void AnchorSumsAvx2(const AnchorWindows& w, const ImageView& src, const M
   for (int k = 0; k < w.num_samples; ++k) {
     const WarpedCells cells = WarpCells(lanes, _mm256_loadu_ps(w.x[k]), _mm256_loadu_ps(w.y[k]));
     ok = _mm256_and_ps(ok, cells.inside);
-    const __m256 s = GatherBilinearPairs(src, cells);
+    const __m256 s = LoadBilinear(src, cells);
     sum_s = _mm256_add_ps(sum_s, s);
     sum_ss = _mm256_fmadd_ps(s, s, sum_ss);
     sum_rs = _mm256_fmadd_ps(_mm256_loadu_ps(w.value[k]), s, sum_rs);

@@ -124,22 +124,35 @@ MSP_HD bool Contains(const int* values, int n, int v) {
   return false;
 }
 
-// The reliable pixel hit by one ray of sector `sector`, or -1. A hit already
-// taken by another ray (neighbouring rays often snap to the same pixel) does
-// not stop the ray: it walks on to find a distinct one. When confined, the
-// ray ends at the first ray position behind a depth edge (every farther one
-// is behind it too), and a snapped hit behind an edge is skipped.
-MSP_HD int CastAnchorRay(const AnchorMaps& maps, int col, int row, int sector, float angle,
-                         int max_distance, const int* taken, int num_taken) {
-  const float dx = cosf(angle), dy = sinf(angle);
-  const float sector_angle = kSectorDegrees * kDegToRad * static_cast<float>(sector);
-  const float sx = cosf(sector_angle), sy = sinf(sector_angle);
+// A unit direction in the image plane.
+struct RayDirection {
+  float x, y;
+};
+
+MSP_HD RayDirection DirectionAt(float degrees) {
+  return RayDirection{cosf(degrees * kDegToRad), sinf(degrees * kDegToRad)};
+}
+
+// The reliable pixel hit by the ray `ray` of the sector whose centre line is
+// `sector`, or -1. A hit already taken by another ray (neighbouring rays
+// often snap to the same pixel) does not stop the ray: it walks on to find a
+// distinct one. When confined, the ray ends at the first ray position behind
+// a depth edge (every farther one is behind it too), and a snapped hit behind
+// an edge is skipped. The ray is walked once, position to position, rather
+// than from p again for every position.
+MSP_HD int CastAnchorRay(const AnchorMaps& maps, int col, int row, RayDirection sector,
+                         RayDirection ray, int max_distance, const int* taken, int num_taken) {
+  int walked_col = col, walked_row = row;  // the ray is clear of edges up to here
   for (int radius = kFirstRayRadius; radius <= max_distance; radius = NextRayRadius(radius)) {
-    const int c = static_cast<int>(floorf(col + dx * radius + 0.5f));
-    const int r = static_cast<int>(floorf(row + dy * radius + 0.5f));
+    const int c = static_cast<int>(floorf(col + ray.x * radius + 0.5f));
+    const int r = static_cast<int>(floorf(row + ray.y * radius + 0.5f));
     if (c < 0 || r < 0 || c >= maps.width || r >= maps.height) return -1;
     int q = r * maps.width + c;
-    if (CrossesDepthEdge(maps, col, row, q)) return -1;
+    if (IsConfined(maps) && SegmentCrossesBoundary(maps.edges, walked_col, walked_row, c, r)) {
+      return -1;
+    }
+    walked_col = c;
+    walked_row = r;
     if (maps.classes[q] != kReliable) {
       q = maps.nearest[q];
       if (q < 0) continue;
@@ -147,7 +160,8 @@ MSP_HD int CastAnchorRay(const AnchorMaps& maps, int col, int row, int sector, f
       const float oy = static_cast<float>(q / maps.width - row);
       const float len2 = ox * ox + oy * oy;
       if (len2 > static_cast<float>(max_distance) * max_distance || len2 <= 0.0f) continue;
-      if (ox * sx + oy * sy < kHalfSectorCos * sqrtf(len2)) continue;  // left the sector
+      if (ox * sector.x + oy * sector.y < kHalfSectorCos * sqrtf(len2))
+        continue;  // left the sector
       if (CrossesDepthEdge(maps, col, row, q)) continue;
     }
     if (maps.depth[q] > 0.0f && !Contains(taken, num_taken, q)) return q;
@@ -167,11 +181,12 @@ MSP_HD int CollectAnchorHits(const AnchorMaps& maps, int col, int row, const Anc
   int n = 0;
   *num_sectors = 0;
   for (int sector = 0; sector < kNumSectors; ++sector) {
+    const RayDirection centre = DirectionAt(kSectorDegrees * sector);
     bool any = false;
     for (int k = 0; k < rays; ++k) {
       const float degrees = kSectorDegrees * sector - 0.5f * kSectorDegrees + (k + 0.5f) * ray_step;
       const int q =
-          CastAnchorRay(maps, col, row, sector, degrees * kDegToRad, params.max_distance, hits, n);
+          CastAnchorRay(maps, col, row, centre, DirectionAt(degrees), params.max_distance, hits, n);
       if (q < 0) continue;
       any = true;
       hits[n++] = q;
@@ -186,20 +201,46 @@ MSP_HD int DrawIndex(Rng* rng, int n) {
   return k < n ? k : n - 1;
 }
 
-// Full anchor search for pixel (col, row). Returns false (and out->count = 0)
-// with fewer than params.min_sectors sectors hit, or when no plane through a
-// triangle containing p has params.min_inliers inliers.
-MSP_HD bool FindAnchors(const Camera& cam, const AnchorMaps& maps, int col, int row,
-                        const AnchorParams& params, Rng* rng, AnchorSet* out) {
+// The ray hits of one pixel. Within a pass they stay the same (the classes,
+// the nearest-reliable map and the edges are fixed, and a depth once positive
+// stays so), so they are cast once per pass and refitted every iteration.
+struct AnchorHits {
+  int count;
+  int num_sectors;
+  int index[kMaxAnchorHits];
+};
+
+MSP_HD void CastAnchorHits(const AnchorMaps& maps, int col, int row, const AnchorParams& params,
+                           AnchorHits* hits) {
+  hits->count = CollectAnchorHits(maps, col, row, params, hits->index, &hits->num_sectors);
+}
+
+// True while every hit still has a depth on maps (else they must be cast again).
+MSP_HD bool HitsStillValid(const AnchorMaps& maps, const AnchorHits& hits) {
+  for (int k = 0; k < hits.count; ++k) {
+    if (!(maps.depth[hits.index[k]] > 0.0f)) return false;
+  }
+  return true;
+}
+
+// The RANSAC step of the anchor search on the hits' current depths. Returns
+// false (and out->count = 0) with fewer than params.min_sectors sectors hit,
+// or when no plane through a triangle containing p has params.min_inliers inliers.
+MSP_HD bool FitAnchors(const Camera& cam, const AnchorMaps& maps, int col, int row,
+                       const AnchorParams& params, const AnchorHits& cast, Rng* rng,
+                       AnchorSet* out) {
   out->count = 0;
   out->num_inliers = 0;
-  int hits[kMaxAnchorHits];
-  const int n = CollectAnchorHits(maps, col, row, params, hits, &out->num_sectors);
+  out->num_sectors = cast.num_sectors;
+  const int n = cast.count;
+  const int* hits = cast.index;
   if (out->num_sectors < params.min_sectors || n < 3) return false;
   Vec3 points[kMaxAnchorHits];
+  float hit_x[kMaxAnchorHits], hit_y[kMaxAnchorHits];  // image positions, for the triangle test
   for (int k = 0; k < n; ++k) {
-    const int c = hits[k] % maps.width, r = hits[k] / maps.width;
-    points[k] = BackProject(cam, static_cast<float>(c), static_cast<float>(r), maps.depth[hits[k]]);
+    hit_x[k] = static_cast<float>(hits[k] % maps.width);
+    hit_y[k] = static_cast<float>(hits[k] / maps.width);
+    points[k] = BackProject(cam, hit_x[k], hit_y[k], maps.depth[hits[k]]);
   }
   const float px = static_cast<float>(col), py = static_cast<float>(row);
   int best_count = 0;
@@ -209,11 +250,7 @@ MSP_HD bool FindAnchors(const Camera& cam, const AnchorMaps& maps, int col, int 
   for (int it = 0; it < params.ransac_iterations; ++it) {
     const int a = DrawIndex(rng, n), b = DrawIndex(rng, n), c = DrawIndex(rng, n);
     if (a == b || b == c || a == c) continue;
-    if (!TriangleContains(
-            static_cast<float>(hits[a] % maps.width), static_cast<float>(hits[a] / maps.width),
-            static_cast<float>(hits[b] % maps.width), static_cast<float>(hits[b] / maps.width),
-            static_cast<float>(hits[c] % maps.width), static_cast<float>(hits[c] / maps.width), px,
-            py)) {
+    if (!TriangleContains(hit_x[a], hit_y[a], hit_x[b], hit_y[b], hit_x[c], hit_y[c], px, py)) {
       continue;
     }
     const Vec3 u = points[b] - points[a], v = points[c] - points[a];
@@ -262,6 +299,14 @@ MSP_HD bool FindAnchors(const Camera& cam, const AnchorMaps& maps, int col, int 
     error[pick] = 1e30f;  // taken
   }
   return true;
+}
+
+// Full anchor search for pixel (col, row): the rays, then the RANSAC fit.
+MSP_HD bool FindAnchors(const Camera& cam, const AnchorMaps& maps, int col, int row,
+                        const AnchorParams& params, Rng* rng, AnchorSet* out) {
+  AnchorHits hits;
+  CastAnchorHits(maps, col, row, params, &hits);
+  return FitAnchors(cam, maps, col, row, params, hits, rng, out);
 }
 
 // p's hypothesis on the anchors' RANSAC plane (depth 0 when the ray misses it).

@@ -12,8 +12,8 @@ struct Camera {
   int width;
   int height;
   float fx, fy, cx, cy;
-  Mat3 R;     // world -> camera rotation
-  Vec3 t;     // world -> camera translation: X_cam = R X_world + t
+  Mat3 R;       // world -> camera rotation
+  Vec3 t;       // world -> camera translation: X_cam = R X_world + t
   Vec3 center;  // camera centre in world coordinates, -R^T t
 };
 

@@ -56,20 +56,29 @@ MSP_HD void PrepareDeformableWindows(const PassParams& p, int col, int row,
 }
 
 // Deformable cost of a prepared hypothesis at the centre pixel in source
-// view j; the geometric term is added in geometric passes exactly as in ViewCost.
+// view j; the geometric term is added in geometric passes exactly as in
+// ViewCost. `conventional`, when given, receives ViewCost of the same plane,
+// which the centre window has computed on the way.
 MSP_HD float DeformableViewCost(const PassParams& p, const DeformableWindows& w, int j,
-                                const PreparedPlane& plane, const DeformableParams& d) {
-  if (!plane.valid) return kMaxCost;
+                                const PreparedPlane& plane, const DeformableParams& d,
+                                float* conventional = nullptr) {
+  if (!plane.valid) {
+    if (conventional != nullptr) *conventional = kMaxCost;
+    return kMaxCost;
+  }
   const SourceView& s = p.src[j];
   const Mat3 H = WarpHomography(s.rel, plane.warp);
-  float cost = WindowNccCost(w.centre, p.ref_image, s.image, H, p.ncc);
+  const float centre = WindowNccCost(w.centre, p.ref_image, s.image, H, p.ncc);
+  float cost = centre;
   if (w.anchors.count > 0) {
     // H maps every reference pixel on p's plane: an anchor window is the
     // part of p's (deformed) patch that lies around the anchor.
     const float sum = AnchorCostSum(w.anchors, p.ref_image, s.image, H, AnchorNccParams(p.ncc, d));
     cost = d.lambda * cost + (1.0f - d.lambda) * (sum / w.anchors.count);
   }
-  return cost + GeometricTerm(p, j, w.centre.col, w.centre.row, plane.point);
+  const float geometric = GeometricTerm(p, j, w.centre.col, w.centre.row, plane.point);
+  if (conventional != nullptr) *conventional = centre + geometric;
+  return cost + geometric;
 }
 
 // One-off form for tests: prepares the windows itself.
@@ -81,14 +90,18 @@ MSP_HD float DeformableViewCost(const PassParams& p, int j, int col, int row,
   return DeformableViewCost(p, w, j, PreparePlane(p, col, row, h), d);
 }
 
-// Deformable costs of h in every view with a non-zero weight (all when null).
+// Deformable costs of h in every view with a non-zero weight (all when
+// null), and the conventional costs of the same views.
 MSP_HD void DeformableViewCosts(const PassParams& p, const DeformableWindows& w,
                                 const PlaneHypothesis& h, const DeformableParams& d,
-                                const float* weights, float* costs) {
+                                const float* weights, float* costs, float* conventional) {
   const PreparedPlane plane = PreparePlane(p, w.centre.col, w.centre.row, h);
   for (int j = 0; j < p.num_src; ++j) {
-    costs[j] = (weights == nullptr || weights[j] > 0.0f) ? DeformableViewCost(p, w, j, plane, d)
-                                                         : kMaxCost;
+    if (weights == nullptr || weights[j] > 0.0f) {
+      costs[j] = DeformableViewCost(p, w, j, plane, d, &conventional[j]);
+    } else {
+      costs[j] = conventional[j] = kMaxCost;
+    }
   }
 }
 

@@ -49,6 +49,8 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
   PlaneHypothesis cand[kMaxDeformableCandidates];
   bool has[kMaxDeformableCandidates];
   float costs[kMaxDeformableCandidates * kMaxSourceViews];
+  // The conventional costs of the same rows: the stored cost of the winner.
+  float conventional[kMaxDeformableCandidates * kMaxSourceViews];
   const int num_anchors = anchors.count < kMaxAnchors ? anchors.count : kMaxAnchors;
   for (int k = 0; k < num_anchors; ++k) {
     const PlaneHypothesis h = planes.Get(planes.width * anchors.rows[k] + anchors.cols[k]);
@@ -65,27 +67,35 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
   cand[current] = s.Get(i);
   has[current] = cand[current].depth > 0.0f;
   const int num_rows = current + 1;
-  DeformableWindows windows;
-  PrepareDeformableWindows(p, col, row, anchors, d, &windows);
   bool any = false;
-  for (int k = 0; k < num_rows; ++k) {
-    float* row_costs = costs + k * kMaxSourceViews;
-    if (has[k]) {
-      DeformableViewCosts(p, windows, cand[k], d, nullptr, row_costs);
-      any = true;
-    } else {
-      for (int j = 0; j < p.num_src; ++j) row_costs[j] = kMaxCost;
-    }
-  }
+  for (int k = 0; k < num_rows; ++k) any = any || has[k];
   if (!any) {
     UpdatePixel(p, col, row, iteration);
     return;
+  }
+  DeformableWindows windows;
+  PrepareDeformableWindows(p, col, row, anchors, d, &windows);
+  // The anchors' and the RANSAC candidates in every view: view selection
+  // reads them all.
+  for (int k = 0; k < current; ++k) {
+    float* row_costs = costs + k * kMaxSourceViews;
+    float* row_conventional = conventional + k * kMaxSourceViews;
+    if (has[k]) {
+      DeformableViewCosts(p, windows, cand[k], d, nullptr, row_costs, row_conventional);
+    } else {
+      for (int j = 0; j < p.num_src; ++j) row_costs[j] = row_conventional[j] = kMaxCost;
+    }
   }
   Rng select_rng =
       MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamSelect, pixel));
   float weights[kMaxSourceViews];
   const uint32_t mask = SelectViews(costs, current, p.num_src, kMaxSourceViews, iteration,
                                     s.mask[i], p.num_samples, &select_rng, weights);
+  // The current plane only competes: its selected views suffice.
+  if (has[current]) {
+    DeformableViewCosts(p, windows, cand[current], d, weights, costs + current * kMaxSourceViews,
+                        conventional + current * kMaxSourceViews);
+  }
   int best = -1;
   float best_cost = 1e30f;
   for (int k = 0; k < num_rows; ++k) {
@@ -97,24 +107,25 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
     }
   }
   PlaneHypothesis cur = cand[best];
+  float stored_cost = AggregateCost(conventional + best * kMaxSourceViews, weights, p.num_src);
   Rng refine_rng =
       MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamRefine, pixel));
-  float c[kMaxSourceViews];
   for (int k = 0; k < kNumRefinementCandidates; ++k) {
     const PlaneHypothesis h = RefinementCandidate(p, col, row, cur, k, &refine_rng);
     if (!DepthInRange(p, h.depth)) continue;
-    DeformableViewCosts(p, windows, h, d, weights, c);
+    float c[kMaxSourceViews], c_conventional[kMaxSourceViews];
+    DeformableViewCosts(p, windows, h, d, weights, c, c_conventional);
     const float agg = AggregateCost(c, weights, p.num_src);
     if (agg < best_cost) {
       best_cost = agg;
       cur = h;
+      stored_cost = AggregateCost(c_conventional, weights, p.num_src);
     }
   }
   s.Set(i, cur);
   s.mask[i] = mask;
-  // Conventional cost of the chosen plane: what neighbours compare against.
-  ViewCosts(p, windows.centre, cur, weights, c);
-  s.cost[i] = AggregateCost(c, weights, p.num_src);
+  // The conventional cost of the chosen plane: what neighbours compare against.
+  s.cost[i] = stored_cost;
 }
 
 }  // namespace core

@@ -14,7 +14,6 @@
 namespace msp {
 namespace core {
 
-
 // Below this intensity variance (intensities in [0,1]) a window carries no
 // signal and NCC is undefined: about 0.08 grey levels of standard deviation.
 constexpr float kMinNccVariance = 1e-7f;
@@ -22,13 +21,12 @@ constexpr float kMinNccVariance = 1e-7f;
 constexpr float kMinValidSampleShare = 0.5f;
 
 struct NccParams {
-  int window_radius;    // r: offsets -r, -r+step, ..., r
+  int window_radius;  // r: offsets -r, -r+step, ..., r
   int window_step;
   int bilateral;        // 0: uniform weights (APD), 1: COLMAP's bilateral weights
   float sigma_spatial;  // pixels
   float sigma_color;    // intensity units ([0,1] images)
 };
-
 
 // Weighted sums of one window: reference r, source s.
 struct NccSums {

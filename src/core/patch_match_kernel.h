@@ -260,7 +260,8 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
   has[kNumPropagationCandidates] = cand[kNumPropagationCandidates].depth > 0.0f;
   RefWindow w;
   PrepareWindow(p, col, row, &w);
-  for (int k = 0; k < kRows; ++k) {
+  // The propagated candidates in every view: view selection reads them all.
+  for (int k = 0; k < kNumPropagationCandidates; ++k) {
     float* row_costs = costs + k * kMaxSourceViews;
     if (has[k]) {
       ViewCosts(p, w, cand[k], nullptr, row_costs);
@@ -273,6 +274,11 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
   float weights[kMaxSourceViews];
   const uint32_t mask = SelectViews(costs, kNumPropagationCandidates, p.num_src, kMaxSourceViews,
                                     iteration, s.mask[i], p.num_samples, &select_rng, weights);
+  // The current plane only competes: its selected views suffice.
+  if (has[kNumPropagationCandidates]) {
+    ViewCosts(p, w, cand[kNumPropagationCandidates], weights,
+              costs + kNumPropagationCandidates * kMaxSourceViews);
+  }
   int best = -1;
   float best_cost = 1e30f;
   for (int k = 0; k < kRows; ++k) {

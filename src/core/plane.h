@@ -20,7 +20,8 @@ struct PlaneHypothesis {
 // Distance term d' of the plane n^T X + d' = 0 through the pixel's 3D point;
 // positive for a camera-facing normal.
 MSP_HD float PlaneDistance(const Camera& cam, int col, int row, const PlaneHypothesis& h) {
-  return -Dot(h.normal, BackProject(cam, static_cast<float>(col), static_cast<float>(row), h.depth));
+  return -Dot(h.normal,
+              BackProject(cam, static_cast<float>(col), static_cast<float>(row), h.depth));
 }
 
 // Depth (camera z) where the ray of pixel (col, row) meets the plane n^T X + dist = 0.

@@ -114,7 +114,7 @@ inline bool WindowSumsAvx2(const RefWindow& w, const ImageView& src, const Mat3&
   for (int k = 0; k < w.num_samples; k += kWindowLanes) {
     const WarpedCells cells = WarpCells(lanes, _mm256_loadu_ps(w.x + k), _mm256_loadu_ps(w.y + k));
     if (_mm256_movemask_ps(cells.inside) != 0xFF) return false;
-    const __m256 s = _mm256_and_ps(GatherBilinearPairs(src, cells), FirstLanes(w.num_samples - k));
+    const __m256 s = _mm256_and_ps(LoadBilinear(src, cells), FirstLanes(w.num_samples - k));
     sum_s = _mm256_add_ps(sum_s, s);
     sum_ss = _mm256_fmadd_ps(s, s, sum_ss);
     sum_rs = _mm256_fmadd_ps(_mm256_loadu_ps(w.value + k), s, sum_rs);

@@ -130,9 +130,12 @@ MSP_HD uint8_t ClassifyCostCurveLazily(LazyCostCurve<Sampler>& curve,
   for (int i = lo; i <= hi; ++i) {
     if (i != lowest && curve.IsMinimum(i) && curve.At(i) < second) second = curve.At(i);
   }
-  for (int step = 0; step < n - (hi - lo + 1); ++step) {
-    // Right of the central range first, then left of it.
-    const int i = hi + 1 + step < n ? hi + 1 + step : lo - 1 - (step - (n - 1 - hi));
+  // The outer samples nearest the centre first, alternating sides (a
+  // competing minimum is most often close, and finding one ends the scan).
+  int right = hi + 1, left = lo - 1;
+  while (right < n || left >= 0) {
+    const bool take_right = right < n && (left < 0 || right - hi <= lo - left);
+    const int i = take_right ? right++ : left--;
     if (!curve.IsMinimum(i)) continue;
     ++num_minima;
     const float v = curve.At(i);

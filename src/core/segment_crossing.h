@@ -99,8 +99,8 @@ MSP_HD uint32_t LayersCrossedBySegment(const LayerBoundaryView& boundaries, uint
   uint32_t crossed = 0u;
   for (LineWalk walk(p_col, p_row, s_col, s_row); !walk.Done() && crossed != all_layers;) {
     walk.Next();
-    crossed |= boundaries.Contains(walk.col, walk.row) ? boundaries.At(walk.col, walk.row)
-                                                       : all_layers;
+    crossed |=
+        boundaries.Contains(walk.col, walk.row) ? boundaries.At(walk.col, walk.row) : all_layers;
   }
   return crossed & all_layers;
 }

@@ -51,8 +51,8 @@ MSP_HD Mat3 Mul(const Mat3& A, const Mat3& B) {
   Mat3 C;
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 3; ++c) {
-      C.m[3 * r + c] = A.m[3 * r + 0] * B.m[0 + c] + A.m[3 * r + 1] * B.m[3 + c] +
-                       A.m[3 * r + 2] * B.m[6 + c];
+      C.m[3 * r + c] =
+          A.m[3 * r + 0] * B.m[0 + c] + A.m[3 * r + 1] * B.m[3 + c] + A.m[3 * r + 2] * B.m[6 + c];
     }
   }
   return C;

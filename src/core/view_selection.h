@@ -18,10 +18,10 @@ namespace core {
 constexpr float kGoodCostStart = 0.8f;
 constexpr float kGoodCostDecay = 90.0f;
 constexpr float kBadCost = 1.2f;
-constexpr int kMinGoodCandidates = 3;  // "good > 2"
-constexpr int kMaxBadCandidates = 2;   // "bad < 3"
-constexpr float kLikelihoodSigma2x2 = 0.18f;    // 2 * 0.3^2
-constexpr float kFallbackSigma2x2 = 0.32f;      // 2 * 0.4^2
+constexpr int kMinGoodCandidates = 3;         // "good > 2"
+constexpr int kMaxBadCandidates = 2;          // "bad < 3"
+constexpr float kLikelihoodSigma2x2 = 0.18f;  // 2 * 0.3^2
+constexpr float kFallbackSigma2x2 = 0.32f;    // 2 * 0.4^2
 constexpr float kSelectedPrior = 0.9f;
 constexpr float kUnselectedPrior = 0.1f;
 

@@ -62,7 +62,7 @@ inline WarpLanes MakeWarpLanes(const Mat3& H, const ImageView& src) {
 
 // Eight warped positions: the bilinear cell (index of its top-left pixel,
 // fractions fx, fy) and the mask of lanes whose support lies in the source.
-// Lanes outside get index 0 and fractions 0, so gathers stay in bounds.
+// Lanes outside get index 0 and fractions 0, so their loads stay in bounds.
 struct WarpedCells {
   __m256i index;
   __m256 fx, fy;
@@ -98,28 +98,25 @@ inline __m256 Bilinear(const WarpedCells& c, __m256 p00, __m256 p01, __m256 p10,
   return _mm256_fmadd_ps(c.fy, _mm256_sub_ps(bottom, top), top);
 }
 
-// The bilinear values of eight cells, one gather per tap.
-inline __m256 GatherBilinear(const ImageView& src, const WarpedCells& c) {
-  return Bilinear(c, _mm256_i32gather_ps(src.data, c.index, 4),
-                  _mm256_i32gather_ps(src.data + 1, c.index, 4),
-                  _mm256_i32gather_ps(src.data + src.pitch, c.index, 4),
-                  _mm256_i32gather_ps(src.data + src.pitch + 1, c.index, 4));
-}
-
-// The same with the two taps of a row fetched as one 64-bit pair: half the
-// gathered elements. The index lanes are pre-ordered so that de-interleaving
-// the pairs puts the samples back in lane order.
-inline __m256 GatherBilinearPairs(const ImageView& src, const WarpedCells& c) {
-  const __m256i pair_order = _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
-  const __m256i index = _mm256_permutevar8x32_epi32(c.index, pair_order);
-  const __m128i low = _mm256_castsi256_si128(index), high = _mm256_extracti128_si256(index, 1);
-  const double* row0 = reinterpret_cast<const double*>(src.data);
-  const double* row1 = reinterpret_cast<const double*>(src.data + src.pitch);
-  // Scale 4: the indices count floats; each gathered double is a tap pair.
-  const __m256 top_low = _mm256_castpd_ps(_mm256_i32gather_pd(row0, low, 4));
-  const __m256 top_high = _mm256_castpd_ps(_mm256_i32gather_pd(row0, high, 4));
-  const __m256 bottom_low = _mm256_castpd_ps(_mm256_i32gather_pd(row1, low, 4));
-  const __m256 bottom_high = _mm256_castpd_ps(_mm256_i32gather_pd(row1, high, 4));
+// The bilinear values of eight cells. The two taps of a cell's row are
+// adjacent: one 64-bit load fetches both, and two cells share a 128-bit half.
+// Plain loads measured faster than gather instructions here. Lanes are
+// loaded in the order (0, 1, 4, 5 | 2, 3, 6, 7) so that de-interleaving the
+// pairs puts the samples back in lane order.
+inline __m256 LoadBilinear(const ImageView& src, const WarpedCells& c) {
+  alignas(32) int index[8];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(index), c.index);
+  const float* row0 = src.data;
+  const float* row1 = src.data + src.pitch;
+  auto pairs = [&](const float* base, int a, int b, int e, int f) {
+    const __m128d low = _mm_loadh_pd(_mm_load_sd(reinterpret_cast<const double*>(base + index[a])),
+                                     reinterpret_cast<const double*>(base + index[b]));
+    const __m128d high = _mm_loadh_pd(_mm_load_sd(reinterpret_cast<const double*>(base + index[e])),
+                                      reinterpret_cast<const double*>(base + index[f]));
+    return _mm256_castpd_ps(_mm256_insertf128_pd(_mm256_castpd128_pd256(low), high, 1));
+  };
+  const __m256 top_low = pairs(row0, 0, 1, 4, 5), top_high = pairs(row0, 2, 3, 6, 7);
+  const __m256 bottom_low = pairs(row1, 0, 1, 4, 5), bottom_high = pairs(row1, 2, 3, 6, 7);
   return Bilinear(c, _mm256_shuffle_ps(top_low, top_high, _MM_SHUFFLE(2, 0, 2, 0)),
                   _mm256_shuffle_ps(top_low, top_high, _MM_SHUFFLE(3, 1, 3, 1)),
                   _mm256_shuffle_ps(bottom_low, bottom_high, _MM_SHUFFLE(2, 0, 2, 0)),

@@ -54,7 +54,7 @@ inline PartialSums PartialSumsAvx2(const RefWindow& w, const ImageView& src, con
     const WarpedCells cells = WarpCells(lanes, _mm256_loadu_ps(w.x + k), _mm256_loadu_ps(w.y + k));
     const __m256 valid = _mm256_and_ps(cells.inside, FirstLanes(w.num_samples - k));
     count += __builtin_popcount(static_cast<unsigned>(_mm256_movemask_ps(valid)));
-    const __m256 s = _mm256_and_ps(GatherBilinear(src, cells), valid);
+    const __m256 s = _mm256_and_ps(LoadBilinear(src, cells), valid);
     const __m256 r = _mm256_and_ps(_mm256_loadu_ps(w.value + k), valid);
     sum_r = _mm256_add_ps(sum_r, r);
     sum_rr = _mm256_fmadd_ps(r, r, sum_rr);
@@ -105,7 +105,7 @@ MSP_HD float WindowNccCost(const RefWindow& w, const ImageView& ref, const Image
     return w.textured ? NccFromSourceSums(sums, w.num_samples) : kMaxCost;
   }
   // Part of the warped window leaves the source.
-  float u, v;
+  float u = 0.0f, v = 0.0f;
   if (!ApplyHomography(H, static_cast<float>(w.col), static_cast<float>(w.row), &u, &v) ||
       !(u >= 0.0f && v >= 0.0f && u <= src.width - 1.0f && v <= src.height - 1.0f)) {
     return kMaxCost;

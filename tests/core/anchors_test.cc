@@ -49,8 +49,8 @@ struct Layout {
   }
 
   AnchorMaps Maps() const {
-    return AnchorMaps{classes.data(), nearest.data(), depth.data(), kSize, kSize,
-                      BoundaryView{nullptr, 0, 0, 0}};
+    return AnchorMaps{classes.data(), nearest.data(), depth.data(),
+                      kSize,          kSize,          BoundaryView{nullptr, 0, 0, 0}};
   }
 
   bool Find(int round, AnchorSet* out, uint64_t key = 7) const {
@@ -208,7 +208,8 @@ TEST(Anchors, DepthEdgeRejectsHitsBehindItAndKeepsThoseInside) {
 
   int free_hits[kMaxAnchorHits], confined_hits[kMaxAnchorHits];
   int free_sectors = 0, confined_sectors = 0;
-  const int num_free = CollectAnchorHits(layout.Maps(), kCol, kRow, params, free_hits, &free_sectors);
+  const int num_free =
+      CollectAnchorHits(layout.Maps(), kCol, kRow, params, free_hits, &free_sectors);
   const int num_confined =
       CollectAnchorHits(confined_maps, kCol, kRow, params, confined_hits, &confined_sectors);
   int behind = 0;
@@ -224,7 +225,8 @@ TEST(Anchors, DepthEdgeRejectsHitsBehindItAndKeepsThoseInside) {
   ASSERT_TRUE(layout.FindConfined(edges, &confined));
   ASSERT_EQ(confined.count, kMaxAnchors);
   for (int k = 0; k < confined.count; ++k) {
-    EXPECT_LT(confined.cols[k], kEdgeCol) << "anchor " << confined.cols[k] << "," << confined.rows[k];
+    EXPECT_LT(confined.cols[k], kEdgeCol)
+        << "anchor " << confined.cols[k] << "," << confined.rows[k];
   }
   // The confined anchors still span the true plane through p.
   EXPECT_NEAR(AnchorPlaneHypothesis(layout.cam, confined, kCol, kRow).depth,
@@ -267,6 +269,34 @@ TEST(Anchors, SameKeySameAnchors) {
     EXPECT_EQ(a.cols[k], b.cols[k]);
     EXPECT_EQ(a.rows[k], b.rows[k]);
   }
+}
+
+TEST(Anchors, HitsCastOnceRefitOnNewDepths) {
+  // The sweeps cast the rays once per pass and refit every iteration: the
+  // refit on unchanged depths is the full search, and moved depths move the plane.
+  Layout layout;
+  layout.Fill(OutsideDisk);
+  const AnchorParams params = DefaultAnchorParams(0, kDepthRange, kMaxDistance);
+  AnchorHits hits;
+  CastAnchorHits(layout.Maps(), kCol, kRow, params, &hits);
+  EXPECT_TRUE(HitsStillValid(layout.Maps(), hits));
+  AnchorSet full, refit;
+  ASSERT_TRUE(layout.Find(0, &full));
+  Rng rng = MakeRng(7);
+  ASSERT_TRUE(FitAnchors(layout.cam, layout.Maps(), kCol, kRow, params, hits, &rng, &refit));
+  ASSERT_EQ(refit.count, full.count);
+  for (int k = 0; k < full.count; ++k) {
+    EXPECT_EQ(refit.cols[k], full.cols[k]);
+    EXPECT_EQ(refit.rows[k], full.rows[k]);
+  }
+  for (float& d : layout.depth) d *= 1.1f;  // the whole surface 10 % farther
+  rng = MakeRng(7);
+  ASSERT_TRUE(FitAnchors(layout.cam, layout.Maps(), kCol, kRow, params, hits, &rng, &refit));
+  EXPECT_NEAR(AnchorPlaneHypothesis(layout.cam, refit, kCol, kRow).depth,
+              1.1f * layout.TrueDepth(kCol, kRow), 2e-3f);
+  // A hit that lost its depth sends the pixel back to the rays.
+  layout.depth[hits.index[0]] = 0.0f;
+  EXPECT_FALSE(HitsStillValid(layout.Maps(), hits));
 }
 
 }  // namespace

@@ -67,8 +67,8 @@ TEST(DeformableCost, GeometricTermAsInTheConventionalCost) {
   const AnchorSet a = AnchorsAt(zero, kMaxAnchors, kCol, kRow);
   const PlaneHypothesis h{4.0f, kFrontoParallel};
   const float conventional = ViewCost(s.params, 0, kCol, kRow, h);
-  EXPECT_NEAR(DeformableViewCost(s.params, 0, kCol, kRow, h, a, SameWindow(s.params)),
-              conventional, kRounding);
+  EXPECT_NEAR(DeformableViewCost(s.params, 0, kCol, kRow, h, a, SameWindow(s.params)), conventional,
+              kRounding);
   s.params.geometric = 0;
   EXPECT_NEAR(conventional - ViewCost(s.params, 0, kCol, kRow, h),
               s.params.geom_lambda * s.params.geom_max_error, 1e-5f);
@@ -86,15 +86,18 @@ TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
   EXPECT_LT(DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d), 0.05f);
   EXPECT_GT(DeformableViewCost(s.params, 0, kCol, kRow, wrong, a, d), 0.5f);
   // All views at once, weights skip a view.
-  float costs[kMaxSourceViews];
+  float costs[kMaxSourceViews], conventional[kMaxSourceViews];
   const float weights[1] = {1.0f};
   DeformableWindows windows;
   PrepareDeformableWindows(s.params, kCol, kRow, a, d, &windows);
-  DeformableViewCosts(s.params, windows, truth, d, weights, costs);
+  DeformableViewCosts(s.params, windows, truth, d, weights, costs, conventional);
   EXPECT_EQ(costs[0], DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d));
+  // The conventional cost comes out on the way, equal to ViewCost's.
+  EXPECT_EQ(conventional[0], ViewCost(s.params, 0, kCol, kRow, truth));
   const float skip[1] = {0.0f};
-  DeformableViewCosts(s.params, windows, truth, d, skip, costs);
+  DeformableViewCosts(s.params, windows, truth, d, skip, costs, conventional);
   EXPECT_EQ(costs[0], kMaxCost);
+  EXPECT_EQ(conventional[0], kMaxCost);
 }
 
 TEST(DeformableCost, TexturedAnchorsRescueATexturelessCentre) {

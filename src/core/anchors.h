@@ -112,9 +112,10 @@ MSP_HD bool TriangleContains(float ax, float ay, float bx, float by, float cx, f
   const float d1 = (bx - ax) * (y - ay) - (by - ay) * (x - ax);
   const float d2 = (cx - bx) * (y - by) - (cy - by) * (x - bx);
   const float d3 = (ax - cx) * (y - cy) - (ay - cy) * (x - cx);
-  const bool has_neg = d1 < 0.0f || d2 < 0.0f || d3 < 0.0f;
-  const bool has_pos = d1 > 0.0f || d2 > 0.0f || d3 > 0.0f;
-  return !(has_neg && has_pos);
+  // Bitwise, not short-circuit: the signs are unpredictable, branches cost more.
+  const bool has_neg = (d1 < 0.0f) | (d2 < 0.0f) | (d3 < 0.0f);
+  const bool has_pos = (d1 > 0.0f) | (d2 > 0.0f) | (d3 > 0.0f);
+  return !(has_neg & has_pos);
 }
 
 MSP_HD bool Contains(const int* values, int n, int v) {

@@ -1,9 +1,9 @@
 // One red-black update of an unreliable pixel with deformable patch matching
 // (APD-MVS baseline, algorithm.md 2.2): candidates are the anchors' planes
 // continued to the pixel plus the anchors' RANSAC plane, views are selected
-// and candidates compared with the deformable cost (paper eq. 3), then the
-// usual refinement. The stored cost is the conventional one, so that the
-// neighbours' propagation keeps comparing like with like.
+// on the anchors' candidates (8, as ACMM's propagation has), candidates are
+// compared with the deformable cost (paper eq. 3), then the usual refinement. The stored cost is
+// the conventional one, so that the neighbours' propagation keeps comparing like with like.
 #pragma once
 
 #include <cstdint>
@@ -75,9 +75,8 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
   }
   DeformableWindows windows;
   PrepareDeformableWindows(p, col, row, anchors, d, &windows);
-  // The anchors' and the RANSAC candidates in every view: view selection
-  // reads them all.
-  for (int k = 0; k < current; ++k) {
+  // The anchors' candidates in every view: view selection reads them all.
+  for (int k = 0; k < fit; ++k) {
     float* row_costs = costs + k * kMaxSourceViews;
     float* row_conventional = conventional + k * kMaxSourceViews;
     if (has[k]) {
@@ -89,12 +88,18 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
   Rng select_rng =
       MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamSelect, pixel));
   float weights[kMaxSourceViews];
-  const uint32_t mask = SelectViews(costs, current, p.num_src, kMaxSourceViews, iteration,
-                                    s.mask[i], p.num_samples, &select_rng, weights);
-  // The current plane only competes: its selected views suffice.
-  if (has[current]) {
-    DeformableViewCosts(p, windows, cand[current], d, weights, costs + current * kMaxSourceViews,
-                        conventional + current * kMaxSourceViews);
+  const uint32_t mask = SelectViews(costs, fit, p.num_src, kMaxSourceViews, iteration, s.mask[i],
+                                    p.num_samples, &select_rng, weights);
+  // The RANSAC plane and the current plane only compete: their selected views suffice.
+  for (int k = fit; k <= current; ++k) {
+    if (has[k]) {
+      DeformableViewCosts(p, windows, cand[k], d, weights, costs + k * kMaxSourceViews,
+                          conventional + k * kMaxSourceViews);
+    } else {
+      for (int j = 0; j < p.num_src; ++j) {
+        costs[k * kMaxSourceViews + j] = conventional[k * kMaxSourceViews + j] = kMaxCost;
+      }
+    }
   }
   int best = -1;
   float best_cost = 1e30f;

@@ -262,12 +262,11 @@ MSP_HD bool FitAnchors(const Camera& cam, const AnchorMaps& maps, int col, int r
     const float dist = -Dot(unit, points[a]);
     int count = 0;
     float residual = 0.0f;
-    for (int k = 0; k < n; ++k) {
+    for (int k = 0; k < n; ++k) {  // branch-free: inliers are unpredictable
       const float e = fabsf(Dot(unit, points[k]) + dist);
-      if (e <= params.inlier_threshold) {
-        ++count;
-        residual += e;
-      }
+      const bool inlier = e <= params.inlier_threshold;
+      count += inlier;
+      residual += inlier ? e : 0.0f;
     }
     if (count > best_count || (count == best_count && residual < best_residual)) {
       best_count = count;
@@ -286,18 +285,23 @@ MSP_HD bool FitAnchors(const Camera& cam, const AnchorMaps& maps, int col, int r
   out->plane_normal = best_normal;
   out->plane_dist = best_dist;
   // The inliers closest to the plane become the anchors (selection by distance).
+  constexpr float kNotAnInlier = 1e30f;  // outliers, and inliers already taken
   float error[kMaxAnchorHits];
-  for (int k = 0; k < n; ++k) error[k] = fabsf(Dot(best_normal, points[k]) + best_dist);
+  for (int k = 0; k < n; ++k) {
+    const float e = fabsf(Dot(best_normal, points[k]) + best_dist);
+    error[k] = e <= params.inlier_threshold ? e : kNotAnInlier;
+  }
   while (out->count < kMaxAnchors) {
-    int pick = -1;
-    for (int k = 0; k < n; ++k) {
-      if (error[k] <= params.inlier_threshold && (pick < 0 || error[k] < error[pick])) pick = k;
+    int pick = 0;  // the first smallest error, branch-free
+    for (int k = 1; k < n; ++k) {
+      const bool smaller = error[k] < error[pick];
+      pick = smaller ? k : pick;
     }
-    if (pick < 0) break;
+    if (!(error[pick] < kNotAnInlier)) break;
     out->cols[out->count] = hits[pick] % maps.width;
     out->rows[out->count] = hits[pick] / maps.width;
     ++out->count;
-    error[pick] = 1e30f;  // taken
+    error[pick] = kNotAnInlier;
   }
   return true;
 }

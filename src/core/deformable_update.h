@@ -2,8 +2,9 @@
 // (APD-MVS baseline, algorithm.md 2.2): candidates are the anchors' planes
 // continued to the pixel plus the anchors' RANSAC plane, views are selected
 // on the anchors' candidates (8, as ACMM's propagation has), candidates are
-// compared with the deformable cost (paper eq. 3), then the usual refinement. The stored cost is
-// the conventional one, so that the neighbours' propagation keeps comparing like with like.
+// compared with the deformable cost (paper eq. 3), then the usual
+// refinement. The stored cost is the conventional one, so that the
+// neighbours' propagation keeps comparing like with like.
 #pragma once
 
 #include <cstdint>

@@ -6,13 +6,10 @@
 #include "core/deformable_update.h"
 #include "nearest_reliable.h"
 #include "parallel_for.h"
+#include "seconds_since.h"
 
 namespace msp {
 namespace {
-
-double SecondsSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // Anchor RANSAC draws get their own streams: the seed is salted so they never
 // coincide with the propagation / refinement streams of the same pixel.

@@ -14,6 +14,7 @@
 #include "image_pyramid.h"
 #include "parallel_for.h"
 #include "prior_driver.h"
+#include "seconds_since.h"
 #include "state_cache.h"
 #include "sweeps.h"
 
@@ -246,8 +247,7 @@ class CpuRunner {
         if (preview) WritePreview(level, problem, state);
         cache_.Put(problem.ref, std::move(state));
         cache_.EnforceBudget(problem.ref);
-        const double seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const double seconds = SecondsSince(t0);
         std::printf("Round %d/%d, %s pass %d, image %zu/%zu [%s] %dx%d: %.2f s (elapsed %.1f s)\n",
                     round + 1, num_rounds, geometric ? "geometric" : "photometric", pass + 1, n + 1,
                     run_.size(), views_[problem.ref].name.c_str(), params.state.width,
@@ -273,8 +273,7 @@ class CpuRunner {
     reliability.min_spread = static_cast<float>(msp_.reliable_min_spread);
     const auto classify_start = std::chrono::steady_clock::now();
     const ReliabilityMaps maps = ClassifyState(params, reliability, threads_);
-    const double classify_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - classify_start).count();
+    const double classify_seconds = SecondsSince(classify_start);
     DeformableSettings settings;
     settings.anchors = core::DefaultAnchorParams(round, params.depth_max - params.depth_min,
                                                  msp_.anchor_max_distance);
@@ -369,9 +368,7 @@ class CpuRunner {
     sink_.Write(problem.ref, pm_.geom_consistency ? "geometric" : "photometric", depth, normal);
   }
 
-  double Elapsed() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
+  double Elapsed() const { return SecondsSince(start_); }
 
   const std::vector<View>& views_;
   const std::vector<Problem>& problems_;

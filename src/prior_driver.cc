@@ -5,13 +5,10 @@
 #include <stdexcept>
 
 #include "multiscale_segmentation.h"
+#include "seconds_since.h"
 
 namespace msp {
 namespace {
-
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 double EdgeShare(const std::vector<uint8_t>& packed) {
   if (packed.empty()) return 0.0;

@@ -3,14 +3,9 @@
 #include <cassert>
 #include <chrono>
 
+#include "seconds_since.h"
+
 namespace msp {
-namespace {
-
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 SegmentationPriorResult RunSegmentationPrior(const SegmentationPriorInput& input,
                                              const MspStereoOptions& options) {

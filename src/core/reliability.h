@@ -130,8 +130,9 @@ MSP_HD uint8_t ClassifyCostCurveLazily(LazyCostCurve<Sampler>& curve,
   for (int i = lo; i <= hi; ++i) {
     if (i != lowest && curve.IsMinimum(i) && curve.At(i) < second) second = curve.At(i);
   }
-  // The outer samples nearest the centre first, alternating sides (a
-  // competing minimum is most often close, and finding one ends the scan).
+  // The outer samples nearest the centre first, alternating sides: a
+  // competing minimum found anywhere ends the scan, and the verdict does not
+  // depend on the order.
   int right = hi + 1, left = lo - 1;
   while (right < n || left >= 0) {
     const bool take_right = right < n && (left < 0 || right - hi <= lo - left);

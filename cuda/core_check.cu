@@ -22,6 +22,7 @@
 #include "core/plane.h"
 #include "core/prior_limits.h"
 #include "core/ref_window.h"
+#include "core/refine_and_classify.h"
 #include "core/reliability.h"
 #include "core/rng.h"
 #include "core/segment_crossing.h"
@@ -78,6 +79,15 @@ __global__ void ClassifyKernel(const core::PassParams* params, core::Reliability
   classes[row * params->state.width + col] = core::ClassifyPixel(*params, col, row, rp);
 }
 
+__global__ void LocalRefineAndClassifyKernel(const core::PassParams* params,
+                                             core::ReliabilityParams rp, uint8_t* classes) {
+  const int col = blockIdx.x * blockDim.x + threadIdx.x;
+  const int row = blockIdx.y * blockDim.y + threadIdx.y;
+  if (col >= params->state.width || row >= params->state.height) return;
+  classes[row * params->state.width + col] =
+      core::LocalRefineAndClassifyPixel(*params, col, row, rp);
+}
+
 dim3 GridFor(int width, int height) {
   return dim3((width + kBlockSide - 1) / kBlockSide, (height + kBlockSide - 1) / kBlockSide);
 }
@@ -102,6 +112,13 @@ void LaunchClassify(const core::PassParams* device_params, const core::Reliabili
                     uint8_t* device_classes, int width, int height) {
   ClassifyKernel<<<GridFor(width, height), dim3(kBlockSide, kBlockSide)>>>(device_params, rp,
                                                                            device_classes);
+}
+
+void LaunchLocalRefineAndClassify(const core::PassParams* device_params,
+                                  const core::ReliabilityParams& rp, uint8_t* device_classes,
+                                  int width, int height) {
+  LocalRefineAndClassifyKernel<<<GridFor(width, height), dim3(kBlockSide, kBlockSide)>>>(
+      device_params, rp, device_classes);
 }
 
 }  // namespace cuda

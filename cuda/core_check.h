@@ -28,5 +28,11 @@ void LaunchDeformable(const core::PassParams* device_params, const core::AnchorM
 void LaunchClassify(const core::PassParams* device_params, const core::ReliabilityParams& rp,
                     uint8_t* device_classes, int width, int height);
 
+// The local refinement of every pixel fused with its class for the next pass
+// (LocalRefineAndClassifyPixel) into device_classes.
+void LaunchLocalRefineAndClassify(const core::PassParams* device_params,
+                                  const core::ReliabilityParams& rp, uint8_t* device_classes,
+                                  int width, int height);
+
 }  // namespace cuda
 }  // namespace msp

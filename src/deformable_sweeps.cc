@@ -2,8 +2,11 @@
 
 #include <atomic>
 #include <chrono>
+#include <stdexcept>
+#include <utility>
 
 #include "core/deformable_update.h"
+#include "core/refine_and_classify.h"
 #include "nearest_reliable.h"
 #include "parallel_for.h"
 #include "seconds_since.h"
@@ -39,27 +42,44 @@ core::PriorAnchors ToPriorAnchors(const core::Camera& cam, const core::AnchorSet
 
 ReliabilityMaps ClassifyState(const core::PassParams& params, const core::ReliabilityParams& rp,
                               int num_threads) {
-  core::PassParams photometric = params;
-  photometric.geometric = 0;
-  ReliabilityMaps maps;
-  maps.width = params.state.width;
-  maps.height = params.state.height;
-  maps.classes.assign(static_cast<size_t>(maps.width) * maps.height, core::kUnknown);
-  std::atomic<int> reliable{0}, unreliable{0};
-  ParallelFor(0, maps.height, num_threads, [&](int row) {
-    int r = 0, u = 0;
-    for (int col = 0; col < maps.width; ++col) {
-      const uint8_t c = core::ClassifyPixel(photometric, col, row, rp);
-      maps.classes[static_cast<size_t>(row) * maps.width + col] = c;
-      r += c == core::kReliable;
-      u += c == core::kUnreliable;
+  const int width = params.state.width;
+  std::vector<uint8_t> classes(static_cast<size_t>(width) * params.state.height);
+  ParallelFor(0, params.state.height, num_threads, [&](int row) {
+    for (int col = 0; col < width; ++col) {
+      classes[static_cast<size_t>(row) * width + col] = core::ClassifyPixel(params, col, row, rp);
     }
-    reliable += r;
-    unreliable += u;
   });
-  maps.num_reliable = reliable;
-  maps.num_unreliable = unreliable;
-  maps.nearest = NearestReliablePixels(maps.classes.data(), maps.width, maps.height, num_threads);
+  return MakeReliabilityMaps(std::move(classes), width, params.state.height, num_threads);
+}
+
+std::vector<uint8_t> LocalRefineAndClassifyState(const core::PassParams& params,
+                                                 const core::ReliabilityParams& rp,
+                                                 int num_threads) {
+  const int width = params.state.width;
+  std::vector<uint8_t> classes(static_cast<size_t>(width) * params.state.height);
+  ParallelFor(0, params.state.height, num_threads, [&](int row) {
+    for (int col = 0; col < width; ++col) {
+      classes[static_cast<size_t>(row) * width + col] =
+          core::LocalRefineAndClassifyPixel(params, col, row, rp);
+    }
+  });
+  return classes;
+}
+
+ReliabilityMaps MakeReliabilityMaps(std::vector<uint8_t> classes, int width, int height,
+                                    int num_threads) {
+  if (classes.size() != static_cast<size_t>(width) * height) {
+    throw std::logic_error("reliability classes and pixel state differ in size");
+  }
+  ReliabilityMaps maps;
+  maps.width = width;
+  maps.height = height;
+  maps.classes = std::move(classes);
+  for (uint8_t c : maps.classes) {
+    maps.num_reliable += c == core::kReliable;
+    maps.num_unreliable += c == core::kUnreliable;
+  }
+  maps.nearest = NearestReliablePixels(maps.classes.data(), width, height, num_threads);
   return maps;
 }
 

@@ -31,6 +31,17 @@ struct ReliabilityMaps {
 ReliabilityMaps ClassifyState(const core::PassParams& params, const core::ReliabilityParams& rp,
                               int num_threads);
 
+// The local refinement that ends a pass (LocalRefineState) fused with the
+// classification of the refined state, which the next pass of the round
+// starts with; returns the classes (core::LocalRefineAndClassifyPixel).
+std::vector<uint8_t> LocalRefineAndClassifyState(const core::PassParams& params,
+                                                 const core::ReliabilityParams& rp,
+                                                 int num_threads);
+
+// Counts and the nearest-reliable map of classes computed earlier.
+ReliabilityMaps MakeReliabilityMaps(std::vector<uint8_t> classes, int width, int height,
+                                    int num_threads);
+
 struct DeformableSettings {
   core::AnchorParams anchors;
   core::DeformableParams cost;

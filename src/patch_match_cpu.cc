@@ -8,6 +8,8 @@
 #include <memory>
 #include <set>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "core/output_filter.h"
 #include "deformable_sweeps.h"
@@ -233,13 +235,22 @@ class CpuRunner {
         std::vector<core::PriorAnchors> prior_anchors;
         if (deformable) {
           // The previous pass of this image (the last of the coarser round at a round start).
-          RunDeformableIterations(params, round, pass > 0 ? pass - 1 : num_passes - 1, state.edges,
+          RunDeformableIterations(params, round, pass > 0 ? pass - 1 : num_passes - 1,
+                                  std::move(state.classes), state.edges,
                                   run_prior ? &prior_anchors : nullptr);
+          state.classes.clear();
         } else {
           RunCheckerboardIterations(params, kIterationsPerPass, threads_);
         }
+        const auto refine_start = std::chrono::steady_clock::now();
         MedianFilterState(params, threads_);
-        LocalRefineState(params, threads_);
+        if (msp_.deformable && pass + 1 < num_passes) {
+          // The next pass of the round starts by classifying these planes.
+          state.classes = LocalRefineAndClassifyState(params, ReliabilityAfter(pass), threads_);
+        } else {
+          LocalRefineState(params, threads_);
+        }
+        const double refine_seconds = SecondsSince(refine_start);
         if (run_prior) RunPrior(level, problem, pass_id, round, prior_anchors, &state);
         const bool preview = final_pass && prior_ != nullptr && msp_.write_previews &&
                              !sink_.HasFinalOutput(problem.ref);
@@ -248,31 +259,44 @@ class CpuRunner {
         cache_.Put(problem.ref, std::move(state));
         cache_.EnforceBudget(problem.ref);
         const double seconds = SecondsSince(t0);
-        std::printf("Round %d/%d, %s pass %d, image %zu/%zu [%s] %dx%d: %.2f s (elapsed %.1f s)\n",
-                    round + 1, num_rounds, geometric ? "geometric" : "photometric", pass + 1, n + 1,
-                    run_.size(), views_[problem.ref].name.c_str(), params.state.width,
-                    params.state.height, seconds, Elapsed());
+        std::printf(
+            "Round %d/%d, %s pass %d, image %zu/%zu [%s] %dx%d: %.2f s (filter and local refine "
+            "%.2f s; elapsed %.1f s)\n",
+            round + 1, num_rounds, geometric ? "geometric" : "photometric", pass + 1, n + 1,
+            run_.size(), views_[problem.ref].name.c_str(), params.state.width, params.state.height,
+            seconds, refine_seconds, Elapsed());
         std::fflush(stdout);
       }
     }
     coarser_.reset(new Level(level));
   }
 
-  // Deformable patch matching (algorithm.md 2): the state the previous pass
-  // left (upsampled at a round start) is classified, then unreliable pixels
-  // with anchors take the deformable update during the pass's iterations.
-  // With the segmentation prior, `edges` (PixelState::edges, empty until the
-  // prior first ran) confine the anchor search, and `prior_anchors` receives
-  // the anchors of the first iteration.
-  void RunDeformableIterations(const core::PassParams& params, int round, int finished_pass,
-                               const std::vector<uint8_t>& edges,
-                               std::vector<core::PriorAnchors>* prior_anchors) {
+  // The classification parameters after pass `finished_pass` of a round.
+  core::ReliabilityParams ReliabilityAfter(int finished_pass) const {
     core::ReliabilityParams reliability = core::DefaultReliabilityParams(finished_pass);
     reliability.max_minimum_cost = static_cast<float>(msp_.reliable_max_cost);
     reliability.single_min_cost = static_cast<float>(msp_.reliable_single_cost);
     reliability.min_spread = static_cast<float>(msp_.reliable_min_spread);
+    return reliability;
+  }
+
+  // Deformable patch matching (algorithm.md 2): the state the previous pass
+  // left (upsampled at a round start) is classified, then unreliable pixels
+  // with anchors take the deformable update during the pass's iterations.
+  // `classes` are the classes the previous pass's local refinement computed
+  // (empty at a round start: they are computed here). With the segmentation
+  // prior, `edges` (PixelState::edges, empty until the prior first ran)
+  // confine the anchor search, and `prior_anchors` receives the anchors of
+  // the first iteration.
+  void RunDeformableIterations(const core::PassParams& params, int round, int finished_pass,
+                               std::vector<uint8_t> classes, const std::vector<uint8_t>& edges,
+                               std::vector<core::PriorAnchors>* prior_anchors) {
+    const bool classified = !classes.empty();
     const auto classify_start = std::chrono::steady_clock::now();
-    const ReliabilityMaps maps = ClassifyState(params, reliability, threads_);
+    const ReliabilityMaps maps =
+        classes.empty() ? ClassifyState(params, ReliabilityAfter(finished_pass), threads_)
+                        : MakeReliabilityMaps(std::move(classes), params.state.width,
+                                              params.state.height, threads_);
     const double classify_seconds = SecondsSince(classify_start);
     DeformableSettings settings;
     settings.anchors = core::DefaultAnchorParams(round, params.depth_max - params.depth_min,
@@ -291,11 +315,12 @@ class CpuRunner {
         params, maps, settings, kIterationsPerPass, threads_, prior_anchors);
     const double pixels = static_cast<double>(maps.width) * maps.height;
     std::printf(
-        "  reliable %.1f%%, unreliable %.1f%%, deformable updates %.1f%% of pixels; classification "
-        "%.2f s, anchor search %.2f s, sweeps %.2f s\n",
+        "  reliable %.1f%%, unreliable %.1f%%, deformable updates %.1f%% of pixels; %s %.2f s, "
+        "anchor search %.2f s, sweeps %.2f s\n",
         100.0 * maps.num_reliable / pixels, 100.0 * maps.num_unreliable / pixels,
-        100.0 * stats.anchored_updates / (pixels * kIterationsPerPass), classify_seconds,
-        stats.anchor_seconds, stats.sweep_seconds);
+        100.0 * stats.anchored_updates / (pixels * kIterationsPerPass),
+        classified ? "nearest-reliable map (classes from the local refine)" : "classification",
+        classify_seconds, stats.anchor_seconds, stats.sweep_seconds);
   }
 
   // The prior of one image after a deformable pass (algorithm.md 3.1-3.2): its

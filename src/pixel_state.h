@@ -1,7 +1,8 @@
 // Host storage of one image's per-pixel PatchMatch state: the plane (depth +
 // normal), the aggregated cost and the selected-view mask, 24 bytes per
 // pixel, plus the segmentation prior's edge map (1 byte per pixel) once the
-// prior has run for the image.
+// prior has run for the image and the reliability classes (1 byte per pixel)
+// between the passes of a deformable round.
 #pragma once
 
 #include <cstddef>
@@ -23,6 +24,9 @@ struct PixelState {
   // until the prior first runs. Kept here so it spills and upsamples with
   // the planes it belongs to.
   std::vector<uint8_t> edges;
+  // Reliability classes (core::kReliable ...) of these planes, computed at
+  // the end of a pass for the next pass of the round; empty otherwise.
+  std::vector<uint8_t> classes;
 
   PixelState() = default;
   PixelState(int w, int h)
@@ -36,15 +40,16 @@ struct PixelState {
   bool Empty() const { return depth.empty(); }
   size_t Bytes() const {
     return depth.size() * sizeof(float) + normal.size() * sizeof(float) +
-           cost.size() * sizeof(float) + mask.size() * sizeof(uint32_t) + edges.size();
+           cost.size() * sizeof(float) + mask.size() * sizeof(uint32_t) + edges.size() +
+           classes.size();
   }
   core::PlaneHypothesis Plane(size_t i) const {
     const size_t n = depth.size();
     return core::PlaneHypothesis{depth[i], core::Vec3{normal[i], normal[n + i], normal[2 * n + i]}};
   }
   core::PixelStateView View() {
-    return core::PixelStateView{depth.data(), normal.data(), cost.data(), mask.data(), width,
-                                height};
+    return core::PixelStateView{depth.data(), normal.data(), cost.data(),
+                                mask.data(),  width,         height};
   }
 };
 

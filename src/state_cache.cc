@@ -1,24 +1,42 @@
 #include "state_cache.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
 #include <utility>
-
-#include <unistd.h>
-#include <sys/stat.h>
+#include <vector>
 
 namespace msp {
 namespace {
 
 template <typename T>
 void WriteVector(std::ofstream& out, const std::vector<T>& v) {
-  out.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(T)));
+  out.write(reinterpret_cast<const char*>(v.data()),
+            static_cast<std::streamsize>(v.size() * sizeof(T)));
 }
 
 template <typename T>
 void ReadVector(std::ifstream& in, std::vector<T>* v) {
   in.read(reinterpret_cast<char*>(v->data()), static_cast<std::streamsize>(v->size() * sizeof(T)));
+}
+
+// A per-pixel byte plane that may be empty (edges, classes): a flag, then the bytes.
+void WriteOptionalPlane(std::ofstream& out, const std::vector<uint8_t>& v) {
+  const int present = v.empty() ? 0 : 1;
+  out.write(reinterpret_cast<const char*>(&present), sizeof(present));
+  WriteVector(out, v);
+}
+
+void ReadOptionalPlane(std::ifstream& in, size_t num_pixels, std::vector<uint8_t>* v) {
+  int present = 0;
+  in.read(reinterpret_cast<char*>(&present), sizeof(present));
+  if (!present) return;
+  v->resize(num_pixels);
+  ReadVector(in, v);
 }
 
 }  // namespace
@@ -54,12 +72,8 @@ PixelState& StateCache::Get(int id) {
     ReadVector(in, &state.normal);
     ReadVector(in, &state.cost);
     ReadVector(in, &state.mask);
-    int has_edges = 0;
-    in.read(reinterpret_cast<char*>(&has_edges), sizeof(has_edges));
-    if (has_edges) {
-      state.edges.resize(state.depth.size());
-      ReadVector(in, &state.edges);
-    }
+    ReadOptionalPlane(in, state.depth.size(), &state.edges);
+    ReadOptionalPlane(in, state.depth.size(), &state.classes);
     if (!in) throw std::runtime_error("cannot read spilled state " + sp->second);
     std::remove(sp->second.c_str());
     spilled_.erase(sp);
@@ -107,9 +121,8 @@ void StateCache::Spill(int id) {
   WriteVector(out, it->second.normal);
   WriteVector(out, it->second.cost);
   WriteVector(out, it->second.mask);
-  const int has_edges = it->second.edges.empty() ? 0 : 1;
-  out.write(reinterpret_cast<const char*>(&has_edges), sizeof(has_edges));
-  WriteVector(out, it->second.edges);
+  WriteOptionalPlane(out, it->second.edges);
+  WriteOptionalPlane(out, it->second.classes);
   if (!out) throw std::runtime_error("cannot spill state to " + path + " (disk full?)");
   resident_bytes_ -= it->second.Bytes();
   resident_.erase(it);

@@ -116,12 +116,18 @@ MSP_HD float GeometricTerm(const PassParams& p, int j, int col, int row, const V
                                                   p.geom_max_error);
 }
 
+// The NCC cost alone of a prepared hypothesis at the centre of window w in source view j.
+MSP_HD float PhotometricViewCost(const PassParams& p, const RefWindow& w, int j,
+                                 const PreparedPlane& plane) {
+  if (!plane.valid) return kMaxCost;
+  const Mat3 H = WarpHomography(p.src[j].rel, plane.warp);
+  return WindowNccCost(w, p.ref_image, p.src[j].image, H, p.ncc);
+}
+
 // Cost of a prepared hypothesis at the centre of window w in source view j.
 MSP_HD float ViewCost(const PassParams& p, const RefWindow& w, int j, const PreparedPlane& plane) {
   if (!plane.valid) return kMaxCost;
-  const Mat3 H = WarpHomography(p.src[j].rel, plane.warp);
-  return WindowNccCost(w, p.ref_image, p.src[j].image, H, p.ncc) +
-         GeometricTerm(p, j, w.col, w.row, plane.point);
+  return PhotometricViewCost(p, w, j, plane) + GeometricTerm(p, j, w.col, w.row, plane.point);
 }
 
 MSP_HD float ViewCost(const PassParams& p, const RefWindow& w, int j, const PlaneHypothesis& h) {
@@ -142,6 +148,33 @@ MSP_HD void ViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypoth
   for (int j = 0; j < p.num_src; ++j) {
     costs[j] = (weights == nullptr || weights[j] > 0.0f) ? ViewCost(p, w, j, plane) : kMaxCost;
   }
+}
+
+// The NCC costs alone (ViewCosts without the geometric term).
+MSP_HD void PhotometricViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypothesis& h,
+                                 const float* weights, float* costs) {
+  const PreparedPlane plane = PreparePlane(p, w.col, w.row, h);
+  for (int j = 0; j < p.num_src; ++j) {
+    costs[j] =
+        (weights == nullptr || weights[j] > 0.0f) ? PhotometricViewCost(p, w, j, plane) : kMaxCost;
+  }
+}
+
+// The view-weighted mean of h's geometric terms (0 in photometric passes, or
+// for a plane seen edge-on, whose ViewCost is kMaxCost alone): with ViewCosts
+// = PhotometricViewCosts + this, one photometric sweep serves both costs.
+MSP_HD float MeanGeometricTerm(const PassParams& p, int col, int row, const PlaneHypothesis& h,
+                               const float* weights) {
+  if (!p.geometric) return 0.0f;
+  const PreparedPlane plane = PreparePlane(p, col, row, h);
+  if (!plane.valid) return 0.0f;
+  float sum = 0.0f, total_weight = 0.0f;
+  for (int j = 0; j < p.num_src; ++j) {
+    if (!(weights[j] > 0.0f)) continue;
+    sum += weights[j] * GeometricTerm(p, j, col, row, plane.point);
+    total_weight += weights[j];
+  }
+  return total_weight > 0.0f ? sum / total_weight : 0.0f;
 }
 
 // Mean of the k smallest costs (k = kInitialTopViews or fewer views).

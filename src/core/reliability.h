@@ -23,6 +23,9 @@ constexpr int kNumReliabilityRadii = sizeof(kReliabilityRadii) / sizeof(kReliabi
 constexpr float kDefaultMaxMinimumCost = 0.5f;
 constexpr float kDefaultSingleMinimumCost = 0.15f;
 constexpr float kDefaultMinMinimumSpread = 0.2f;
+// Longest lazily sampled sweep: the curve plus the local refinement's steps
+// on either side (refine_and_classify.h).
+constexpr int kMaxSweepSamples = kCurveSamples + 2 * kLocalRefineRadius;
 
 struct ReliabilityParams {
   int radius;              // |lowest minimum - centre| allowed, in curve samples
@@ -105,8 +108,8 @@ class LazyCostCurve {
  private:
   Sampler* sampler_;
   int n_;
-  float value_[kCurveSamples];
-  bool known_[kCurveSamples];
+  float value_[kMaxSweepSamples];
+  bool known_[kMaxSweepSamples];
 };
 
 template <typename Sampler>
@@ -150,15 +153,16 @@ MSP_HD uint8_t ClassifyCostCurveLazily(LazyCostCurve<Sampler>& curve,
 }
 
 // The cost curve of pixel (col, row): its normal fixed, depths at disparity
-// offsets -kCurveHalfWidth..kCurveHalfWidth px (b = mean baseline to the
-// selected views), each scored with uniform weights over the view mask.
-// `p` should be photometric (geometric = 0): the thresholds are NCC costs.
+// offsets -half_width..half_width px (b = mean baseline to the selected
+// views), each scored with uniform weights over the view mask. The costs are
+// photometric whatever the pass: the thresholds are NCC costs.
 class CostCurveSampler {
  public:
   // False when the pixel is "unknown": window over the border, no depth, or
   // no selected view.
-  MSP_HD bool Prepare(const PassParams& p, int col, int row) {
+  MSP_HD bool Prepare(const PassParams& p, int col, int row, int half_width = kCurveHalfWidth) {
     p_ = &p;
+    half_width_ = half_width;
     const PixelStateView& s = p.state;
     const int r = p.ncc.window_radius;
     if (col < r || row < r || col + r >= s.width || row + r >= s.height) return false;
@@ -172,18 +176,26 @@ class CostCurveSampler {
     PrepareWindow(p, col, row, &window_);
     return true;
   }
-  MSP_HD float At(int k) const {
+  // The plane of sample k (0..2 half_width): the pixel's, at offset k - half_width.
+  MSP_HD PlaneHypothesis Plane(int k) const {
+    if (k == half_width_) return current_;
     PlaneHypothesis h = current_;
     h.depth = DepthAtDisparityOffset(focal_baseline_, current_.depth,
-                                     static_cast<float>(k - kCurveHalfWidth));
+                                     static_cast<float>(k - half_width_));
+    return h;
+  }
+  MSP_HD float At(int k) const {
+    const PlaneHypothesis h = Plane(k);
     if (!DepthInRange(*p_, h.depth)) return kMaxCost;
     float costs[kMaxSourceViews];
-    ViewCosts(*p_, window_, h, weights_, costs);
+    PhotometricViewCosts(*p_, window_, h, weights_, costs);
     return AggregateCost(costs, weights_, p_->num_src);
   }
+  MSP_HD const float* weights() const { return weights_; }
 
  private:
   const PassParams* p_ = nullptr;
+  int half_width_ = kCurveHalfWidth;
   PlaneHypothesis current_;
   float focal_baseline_ = 0.0f;
   float weights_[kMaxSourceViews];

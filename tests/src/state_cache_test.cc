@@ -34,15 +34,18 @@ TEST(StateCache, SpillsBeyondBudgetAndReadsBack) {
   EXPECT_TRUE(cache.Contains(0));
 }
 
-// The segmentation prior's edge map travels with the state: present edges
-// come back byte for byte, absent ones stay absent.
-TEST(StateCache, SpillKeepsPriorEdges) {
+// The segmentation prior's edge map and the reliability classes travel with
+// the state: present planes come back byte for byte, absent ones stay absent.
+TEST(StateCache, SpillKeepsPriorEdgesAndClasses) {
   char dir_template[] = "/tmp/msp_state_cache_XXXXXX";
   const std::string dir = mkdtemp(dir_template);
   PixelState with_edges = Filled(16, 8, 1.0f);
   with_edges.edges.assign(with_edges.depth.size(), 0);
   for (size_t i = 0; i < with_edges.edges.size(); i += 3) with_edges.edges[i] = static_cast<uint8_t>(i % 7);
   const std::vector<uint8_t> expected = with_edges.edges;
+  with_edges.classes.assign(with_edges.depth.size(), 2);
+  for (size_t i = 0; i < with_edges.classes.size(); i += 5) with_edges.classes[i] = 1;
+  const std::vector<uint8_t> expected_classes = with_edges.classes;
   StateCache cache(1, dir);  // spills everything but the kept state
   cache.Put(0, std::move(with_edges));
   cache.Put(1, Filled(16, 8, 2.0f));
@@ -50,8 +53,10 @@ TEST(StateCache, SpillKeepsPriorEdges) {
   cache.EnforceBudget(2);
   EXPECT_EQ(cache.NumSpills(), 2);
   EXPECT_EQ(cache.Get(0).edges, expected);
+  EXPECT_EQ(cache.Get(0).classes, expected_classes);
   EXPECT_FLOAT_EQ(cache.Get(0).depth[1], 2.0f);
   EXPECT_TRUE(cache.Get(1).edges.empty());
+  EXPECT_TRUE(cache.Get(1).classes.empty());
   EXPECT_FLOAT_EQ(cache.Get(1).mask[0], 5u);
 }
 

@@ -69,16 +69,18 @@ MSP_HD float DeformableViewCost(const PassParams& p, const DeformableWindows& w,
   const SourceView& s = p.src[j];
   const Mat3 H = WarpHomography(s.rel, plane.warp);
   const float centre = WindowNccCost(w.centre, p.ref_image, s.image, H, p.ncc);
-  float cost = centre;
-  if (w.anchors.count > 0) {
-    // H maps every reference pixel on p's plane: an anchor window is the
-    // part of p's (deformed) patch that lies around the anchor.
-    const float sum = AnchorCostSum(w.anchors, p.ref_image, s.image, H, AnchorNccParams(p.ncc, d));
-    cost = d.lambda * cost + (1.0f - d.lambda) * (sum / w.anchors.count);
-  }
   const float geometric = GeometricTerm(p, j, w.centre.col, w.centre.row, plane.point);
   if (conventional != nullptr) *conventional = centre + geometric;
-  return cost + geometric;
+  // A view that does not see p costs kMaxCost, as in every matching cost:
+  // anchors it does see do not make it a view of p.
+  if (w.anchors.count == 0 ||
+      (centre >= kMaxCost && !CentreInSource(H, s.image, w.centre.col, w.centre.row))) {
+    return centre + geometric;
+  }
+  // H maps every reference pixel on p's plane: an anchor window is the
+  // part of p's (deformed) patch that lies around the anchor.
+  const float sum = AnchorCostSum(w.anchors, p.ref_image, s.image, H, AnchorNccParams(p.ncc, d));
+  return d.lambda * centre + (1.0f - d.lambda) * (sum / w.anchors.count) + geometric;
 }
 
 // One-off form for tests: prepares the windows itself.

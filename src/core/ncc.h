@@ -48,19 +48,22 @@ MSP_HD float NccFromSums(const NccSums& a) {
   return fminf(fmaxf(1.0f - ncc, 0.0f), kMaxCost);
 }
 
+// True when reference pixel (col, row) maps into the source under H. A view
+// the pixel does not map into does not see it: every matching cost is then
+// kMaxCost, whatever the rest of its window matches.
+MSP_HD bool CentreInSource(const Mat3& H, const ImageView& src, int col, int row) {
+  float u = 0.0f, v = 0.0f;
+  return ApplyHomography(H, static_cast<float>(col), static_cast<float>(row), &u, &v) &&
+         u >= 0.0f && v >= 0.0f && u <= src.width - 1.0f && v <= src.height - 1.0f;
+}
+
 // 1 - NCC in [0, 2] for the window centred at reference pixel (col, row): the
 // general form, with bilateral weights and windows over the image borders.
 // The warp of a grid is incremental: one homogeneous add and one divide per
 // sample. Hot loops use WindowNccCost (ref_window.h), which falls back here.
 MSP_HD float NccCost(const ImageView& ref, const ImageView& src, const Mat3& H, int col, int row,
                      const NccParams& p) {
-  float u, v;
-  if (!ApplyHomography(H, static_cast<float>(col), static_cast<float>(row), &u, &v)) {
-    return kMaxCost;
-  }
-  if (!(u >= 0.0f && v >= 0.0f && u <= src.width - 1.0f && v <= src.height - 1.0f)) {
-    return kMaxCost;
-  }
+  if (!CentreInSource(H, src, col, row)) return kMaxCost;
   const int r = p.window_radius;
   const int step = p.window_step;
   const float x0 = static_cast<float>(col - r);

@@ -105,11 +105,7 @@ MSP_HD float WindowNccCost(const RefWindow& w, const ImageView& ref, const Image
     return w.textured ? NccFromSourceSums(sums, w.num_samples) : kMaxCost;
   }
   // Part of the warped window leaves the source.
-  float u = 0.0f, v = 0.0f;
-  if (!ApplyHomography(H, static_cast<float>(w.col), static_cast<float>(w.row), &u, &v) ||
-      !(u >= 0.0f && v >= 0.0f && u <= src.width - 1.0f && v <= src.height - 1.0f)) {
-    return kMaxCost;
-  }
+  if (!CentreInSource(H, src, w.col, w.row)) return kMaxCost;
   return NccFromPartialSums(PartialWindowSums(w, src, H), w);
 }
 

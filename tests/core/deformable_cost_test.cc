@@ -124,6 +124,37 @@ TEST(DeformableCost, TexturedAnchorsRescueATexturelessCentre) {
   EXPECT_GT(DeformableViewCost(s.params, 0, kCol, kRow, wrong, a, d), good + 0.3f);
 }
 
+TEST(DeformableCost, AViewThatDoesNotSeeThePixelCostsTheMaximum) {
+  testing_scene::PlaneScene s;
+  testing_scene::MakeScene(4.0f, true, &s);
+  const PlaneHypothesis truth{4.0f, kFrontoParallel};
+  const Mat3 H = WarpHomography(s.params.src[0].rel, PreparePlane(s.params, 0, 0, truth).warp);
+  const ImageView& src = s.params.src[0].image;
+  // The edge of the source's view on row kRow: a pixel 3 columns outside it,
+  // anchors 26 columns further in, inside it.
+  int edge = -1;
+  for (int c = 6; c + 1 < s.ref.width - 6 && edge < 0; ++c) {
+    if (CentreInSource(H, src, c, kRow) != CentreInSource(H, src, c + 1, kRow)) edge = c;
+  }
+  ASSERT_GE(edge, 0) << "the source sees the whole row";
+  const int side = CentreInSource(H, src, edge + 1, kRow) ? 1 : -1;
+  const int col = side > 0 ? edge - 2 : edge + 3;
+  ASSERT_FALSE(CentreInSource(H, src, col, kRow));
+  int offsets[kMaxAnchors][2];
+  for (int k = 0; k < kMaxAnchors; ++k) {
+    offsets[k][0] = side * 26;
+    offsets[k][1] = 3 * k - 12;
+  }
+  const AnchorSet a = AnchorsAt(offsets, kMaxAnchors, col, kRow);
+  const DeformableParams d = DefaultDeformableParams();
+  EXPECT_EQ(DeformableViewCost(s.params, 0, col, kRow, truth, a, d), kMaxCost);
+  // The same anchors around a pixel the view does see match the true plane.
+  const int seen_col = col + side * 14;
+  const AnchorSet seen = AnchorsAt(offsets, kMaxAnchors, seen_col, kRow);
+  ASSERT_TRUE(CentreInSource(H, src, seen_col, kRow));
+  EXPECT_LT(DeformableViewCost(s.params, 0, seen_col, kRow, truth, seen, d), 0.5f);
+}
+
 }  // namespace
 }  // namespace core
 }  // namespace msp

@@ -41,7 +41,8 @@ TEST(StateCache, SpillKeepsPriorEdgesAndClasses) {
   const std::string dir = mkdtemp(dir_template);
   PixelState with_edges = Filled(16, 8, 1.0f);
   with_edges.edges.assign(with_edges.depth.size(), 0);
-  for (size_t i = 0; i < with_edges.edges.size(); i += 3) with_edges.edges[i] = static_cast<uint8_t>(i % 7);
+  for (size_t i = 0; i < with_edges.edges.size(); i += 3)
+    with_edges.edges[i] = static_cast<uint8_t>(i % 7);
   const std::vector<uint8_t> expected = with_edges.edges;
   with_edges.classes.assign(with_edges.depth.size(), 2);
   for (size_t i = 0; i < with_edges.classes.size(); i += 5) with_edges.classes[i] = 1;

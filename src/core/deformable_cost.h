@@ -69,7 +69,7 @@ MSP_HD float DeformableViewCost(const PassParams& p, const DeformableWindows& w,
   const SourceView& s = p.src[j];
   const Mat3 H = WarpHomography(s.rel, plane.warp);
   const float centre = WindowNccCost(w.centre, p.ref_image, s.image, H, p.ncc);
-  const float geometric = GeometricTerm(p, j, w.centre.col, w.centre.row, plane.point);
+  const float geometric = GeometricTerm(p, j, w.centre.col, w.centre.row, plane.depth);
   if (conventional != nullptr) *conventional = centre + geometric;
   // A view that does not see p costs kMaxCost, as in every matching cost:
   // anchors it does see do not make it a view of p.

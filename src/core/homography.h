@@ -14,10 +14,14 @@ namespace core {
 // with the parts of eq. 1 that do not depend on the plane: H = KRK - Kt m^T,
 // where KRK = K_j R K_i^-1, Kt = K_j t and m = K_i^-T n / d'.
 struct RelativePose {
-  Mat3 R;
+  Mat3 R;  // reference camera frame -> source camera frame: X_src = R X_ref + t
   Vec3 t;
-  Mat3 KRK;
+  Mat3 KRK;  // K_src R K_ref^-1: a reference pixel at depth d maps to d KRK [col row 1] + Kt
   Vec3 Kt;
+  // The way back: a source pixel (u, v) at source depth d maps to the
+  // reference pixel d back [u v 1] + back_t (homogeneous).
+  Mat3 back;    // K_ref R^T K_src^-1
+  Vec3 back_t;  // -K_ref R^T t
 };
 
 MSP_HD Mat3 Intrinsics(const Camera& c) {
@@ -34,6 +38,9 @@ MSP_HD RelativePose ComputeRelativePose(const Camera& ref, const Camera& src) {
   rel.t = src.t - Mul(rel.R, ref.t);
   rel.KRK = Mul(Intrinsics(src), Mul(rel.R, InverseIntrinsics(ref)));
   rel.Kt = Mul(Intrinsics(src), rel.t);
+  const Mat3 KRt = Mul(Intrinsics(ref), Transposed(rel.R));
+  rel.back = Mul(KRt, InverseIntrinsics(src));
+  rel.back_t = -Mul(KRt, rel.t);
   return rel;
 }
 

@@ -88,12 +88,12 @@ MSP_HD void PrepareWindow(const PassParams& p, int col, int row, RefWindow* w) {
 }
 
 // A hypothesis as every source view scores it at pixel (col, row): the
-// plane's part of the homography and the world point of the geometric term,
-// computed once instead of once per view.
+// plane's part of the homography, computed once instead of once per view,
+// and the depth the geometric term reprojects.
 struct PreparedPlane {
   int valid;  // the plane passes in front of the camera at the pixel
   PlaneWarp warp;
-  Vec3 point;
+  float depth;
 };
 
 MSP_HD PreparedPlane PreparePlane(const PassParams& p, int col, int row, const PlaneHypothesis& h) {
@@ -104,16 +104,16 @@ MSP_HD PreparedPlane PreparePlane(const PassParams& p, int col, int row, const P
   prepared.valid = dist > 0.0f;
   if (!prepared.valid) return prepared;
   prepared.warp = MakePlaneWarp(p.ref_camera, h.normal, dist);
-  prepared.point = CamToWorld(p.ref_camera, X);
+  prepared.depth = h.depth;
   return prepared;
 }
 
 // Geometric consistency term of source view j (0 in photometric passes).
-MSP_HD float GeometricTerm(const PassParams& p, int j, int col, int row, const Vec3& point) {
+MSP_HD float GeometricTerm(const PassParams& p, int j, int col, int row, float depth) {
   const SourceView& s = p.src[j];
   if (!p.geometric || s.depth.data == nullptr) return 0.0f;
-  return p.geom_lambda * ReprojectionErrorOfPoint(p.ref_camera, s.camera, s.depth, col, row, point,
-                                                  p.geom_max_error);
+  return p.geom_lambda *
+         ComposedReprojectionError(s.rel, s.camera, s.depth, col, row, depth, p.geom_max_error);
 }
 
 // The NCC cost alone of a prepared hypothesis at the centre of window w in source view j.
@@ -127,7 +127,7 @@ MSP_HD float PhotometricViewCost(const PassParams& p, const RefWindow& w, int j,
 // Cost of a prepared hypothesis at the centre of window w in source view j.
 MSP_HD float ViewCost(const PassParams& p, const RefWindow& w, int j, const PreparedPlane& plane) {
   if (!plane.valid) return kMaxCost;
-  return PhotometricViewCost(p, w, j, plane) + GeometricTerm(p, j, w.col, w.row, plane.point);
+  return PhotometricViewCost(p, w, j, plane) + GeometricTerm(p, j, w.col, w.row, plane.depth);
 }
 
 MSP_HD float ViewCost(const PassParams& p, const RefWindow& w, int j, const PlaneHypothesis& h) {
@@ -171,7 +171,7 @@ MSP_HD float MeanGeometricTerm(const PassParams& p, int col, int row, const Plan
   float sum = 0.0f, total_weight = 0.0f;
   for (int j = 0; j < p.num_src; ++j) {
     if (!(weights[j] > 0.0f)) continue;
-    sum += weights[j] * GeometricTerm(p, j, col, row, plane.point);
+    sum += weights[j] * GeometricTerm(p, j, col, row, plane.depth);
     total_weight += weights[j];
   }
   return total_weight > 0.0f ? sum / total_weight : 0.0f;

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "core/homography.h"
 #include "test_cameras.h"
 
 namespace msp {
@@ -47,6 +48,37 @@ TEST(GeometricCost, InconsistentDepthIsPenalisedAndClamped) {
   const std::vector<float> empty(src.width * src.height, 0.0f);
   const ImageView none{empty.data(), src.width, src.height, src.width};
   EXPECT_EQ(ReprojectionError(ref, src, none, 100, 75, 3.0f, 3.0f), 3.0f);
+}
+
+// The composed maps give ReprojectionError's answer: consistent, penalised,
+// clamped, off the source, and on a depth map of half the resolution.
+TEST(GeometricCost, ComposedMapsGiveTheSameError) {
+  const Camera ref = Reference(), src = Source();
+  const RelativePose rel = ComputeRelativePose(ref, src);
+  const std::vector<float> depth = SourcePlaneDepth(src);
+  const ImageView full{depth.data(), src.width, src.height, src.width};
+  std::vector<float> half(static_cast<size_t>(src.width / 2) * (src.height / 2));
+  for (int r = 0; r < src.height / 2; ++r) {
+    for (int c = 0; c < src.width / 2; ++c)
+      half[r * (src.width / 2) + c] = depth[2 * r * src.width + 2 * c];
+  }
+  const ImageView coarse{half.data(), src.width / 2, src.height / 2, src.width / 2};
+  int clamped = 0, small = 0;
+  for (const ImageView& view : {full, coarse}) {
+    for (int row = 3; row < ref.height; row += 17) {
+      for (int col = 1; col < ref.width; col += 13) {
+        for (float d : {2.0f, 2.9f, 3.0f, 3.05f, 3.4f, 5.0f, 40.0f}) {
+          const float expected = ReprojectionError(ref, src, view, col, row, d, 3.0f);
+          const float composed = ComposedReprojectionError(rel, src, view, col, row, d, 3.0f);
+          ASSERT_NEAR(composed, expected, 1e-2f) << col << "," << row << " depth " << d;
+          clamped += expected == 3.0f;
+          small += expected < 0.5f;
+        }
+      }
+    }
+  }
+  EXPECT_GT(clamped, 50);  // both outcomes were exercised
+  EXPECT_GT(small, 50);
 }
 
 }  // namespace

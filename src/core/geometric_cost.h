@@ -15,6 +15,18 @@
 namespace msp {
 namespace core {
 
+// The source's depth at its camera pixel (u, v), from the nearest pixel of its
+// map, which may be at another resolution than the camera; false when (u, v)
+// is off the map or the source has no depth there.
+MSP_HD bool SourceDepthAt(const Camera& src, const ImageView& src_depth, float u, float v,
+                          float* depth) {
+  const int c = static_cast<int>(floorf(u * src_depth.width / src.width + 0.5f));
+  const int r = static_cast<int>(floorf(v * src_depth.height / src.height + 0.5f));
+  if (!src_depth.Contains(c, r)) return false;
+  *depth = src_depth.At(c, r);
+  return *depth > 0.0f;
+}
+
 // Forward-backward reprojection error in pixels of the point at `depth` on
 // the ray of reference pixel (col, row); `max_error` when the point leaves
 // the source image or the source has no depth there.
@@ -24,14 +36,8 @@ MSP_HD float ReprojectionError(const Camera& ref, const Camera& src, const Image
       CamToWorld(ref, BackProject(ref, static_cast<float>(col), static_cast<float>(row), depth));
   float u, v;
   if (!ProjectCamPoint(src, WorldToCam(src, X), &u, &v)) return max_error;
-  // The source map may be at another resolution than the source camera.
-  const float su = u * src_depth.width / src.width;
-  const float sv = v * src_depth.height / src.height;
-  const int c = static_cast<int>(floorf(su + 0.5f));
-  const int r = static_cast<int>(floorf(sv + 0.5f));
-  if (!src_depth.Contains(c, r)) return max_error;
-  const float src_d = src_depth.At(c, r);
-  if (!(src_d > 0.0f)) return max_error;
+  float src_d = 0.0f;
+  if (!SourceDepthAt(src, src_depth, u, v, &src_d)) return max_error;
   const Vec3 Y = CamToWorld(src, BackProject(src, u, v, src_d));
   float x, y;
   if (!ProjectCamPoint(ref, WorldToCam(ref, Y), &x, &y)) return max_error;
@@ -51,13 +57,8 @@ MSP_HD float ComposedReprojectionError(const RelativePose& rel, const Camera& sr
   if (!(h.z > 0.0f)) return max_error;  // behind the source camera
   const float inv_z = 1.0f / h.z;
   const float u = h.x * inv_z, v = h.y * inv_z;
-  const float su = u * src_depth.width / src.width;
-  const float sv = v * src_depth.height / src.height;
-  const int c = static_cast<int>(floorf(su + 0.5f));
-  const int r = static_cast<int>(floorf(sv + 0.5f));
-  if (!src_depth.Contains(c, r)) return max_error;
-  const float src_d = src_depth.At(c, r);
-  if (!(src_d > 0.0f)) return max_error;
+  float src_d = 0.0f;
+  if (!SourceDepthAt(src, src_depth, u, v, &src_d)) return max_error;
   const Vec3 q = src_d * Mul(rel.back, Vec3{u, v, 1.0f}) + rel.back_t;
   if (!(q.z > 0.0f)) return max_error;  // behind the reference camera
   const float inv_q = 1.0f / q.z;

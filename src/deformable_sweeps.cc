@@ -38,32 +38,37 @@ core::PriorAnchors ToPriorAnchors(const core::Camera& cam, const core::AnchorSet
   return out;
 }
 
-}  // namespace
-
-ReliabilityMaps ClassifyState(const core::PassParams& params, const core::ReliabilityParams& rp,
-                              int num_threads) {
+// The class `classify(col, row)` of every pixel, rows in parallel.
+template <typename ClassifyFn>
+std::vector<uint8_t> PixelClasses(const core::PassParams& params, int num_threads,
+                                  ClassifyFn classify) {
   const int width = params.state.width;
   std::vector<uint8_t> classes(static_cast<size_t>(width) * params.state.height);
   ParallelFor(0, params.state.height, num_threads, [&](int row) {
     for (int col = 0; col < width; ++col) {
-      classes[static_cast<size_t>(row) * width + col] = core::ClassifyPixel(params, col, row, rp);
+      classes[static_cast<size_t>(row) * width + col] = classify(col, row);
     }
   });
-  return MakeReliabilityMaps(std::move(classes), width, params.state.height, num_threads);
+  return classes;
+}
+
+}  // namespace
+
+ReliabilityMaps ClassifyState(const core::PassParams& params, const core::ReliabilityParams& rp,
+                              int num_threads) {
+  std::vector<uint8_t> classes = PixelClasses(params, num_threads, [&](int col, int row) {
+    return core::ClassifyPixel(params, col, row, rp);
+  });
+  return MakeReliabilityMaps(std::move(classes), params.state.width, params.state.height,
+                             num_threads);
 }
 
 std::vector<uint8_t> LocalRefineAndClassifyState(const core::PassParams& params,
                                                  const core::ReliabilityParams& rp,
                                                  int num_threads) {
-  const int width = params.state.width;
-  std::vector<uint8_t> classes(static_cast<size_t>(width) * params.state.height);
-  ParallelFor(0, params.state.height, num_threads, [&](int row) {
-    for (int col = 0; col < width; ++col) {
-      classes[static_cast<size_t>(row) * width + col] =
-          core::LocalRefineAndClassifyPixel(params, col, row, rp);
-    }
+  return PixelClasses(params, num_threads, [&](int col, int row) {
+    return core::LocalRefineAndClassifyPixel(params, col, row, rp);
   });
-  return classes;
 }
 
 ReliabilityMaps MakeReliabilityMaps(std::vector<uint8_t> classes, int width, int height,

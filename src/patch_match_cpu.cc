@@ -294,9 +294,9 @@ class CpuRunner {
     const bool classified = !classes.empty();
     const auto classify_start = std::chrono::steady_clock::now();
     const ReliabilityMaps maps =
-        classes.empty() ? ClassifyState(params, ReliabilityAfter(finished_pass), threads_)
-                        : MakeReliabilityMaps(std::move(classes), params.state.width,
-                                              params.state.height, threads_);
+        !classified ? ClassifyState(params, ReliabilityAfter(finished_pass), threads_)
+                    : MakeReliabilityMaps(std::move(classes), params.state.width,
+                                          params.state.height, threads_);
     const double classify_seconds = SecondsSince(classify_start);
     DeformableSettings settings;
     settings.anchors = core::DefaultAnchorParams(round, params.depth_max - params.depth_min,

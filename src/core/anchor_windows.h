@@ -2,7 +2,9 @@
 // pixel update like RefWindow but laid out sample-major: entry [k][a] is
 // sample k of anchor a. Scoring a hypothesis then warps sample k of all 8
 // anchors in one vector, so the small 3x3 windows fill whole vectors and
-// every anchor's NCC comes out of the same three sum vectors.
+// every anchor's NCC comes out of the same sum vectors. A window that leaves
+// the source in part is summed over its valid samples, as the centre window
+// is (window_cost.h).
 #pragma once
 
 #include "core/deformable_limits.h"
@@ -11,6 +13,7 @@
 #include "core/ncc.h"
 #include "core/ref_window.h"
 #include "core/vec.h"
+#include "core/window_cost.h"
 
 namespace msp {
 namespace core {
@@ -23,8 +26,9 @@ struct AnchorWindows {
   int count;        // anchors (lanes) in use
   int num_samples;  // per anchor window
   int radius;
-  uint32_t fast;      // bit a: anchor a's window lies inside the reference
-  uint32_t textured;  // bit a: its reference variance reaches kMinNccVariance
+  uint32_t fast;              // bit a: anchor a's window lies inside the reference
+  uint32_t textured;          // bit a: its reference variance reaches kMinNccVariance
+  float spread[kMaxAnchors];  // sum of squared deviations of the raw reference values
   int col[kMaxAnchors];
   int row[kMaxAnchors];
   // Lanes without a fast window (no anchor, or over the reference border)
@@ -44,6 +48,7 @@ MSP_HD void PrepareAnchorWindows(const ImageView& ref, const int* cols, const in
   w->num_samples = per_side * per_side <= kMaxAnchorWindowSamples ? per_side * per_side : 0;
   for (int a = 0; a < kMaxAnchors; ++a) {
     const bool used = a < w->count;
+    w->spread[a] = 0.0f;
     w->col[a] = used ? cols[a] : 0;
     w->row[a] = used ? rows[a] : 0;
     const bool inside = used && w->num_samples > 0 && cols[a] - radius >= 0 &&
@@ -67,6 +72,7 @@ MSP_HD void PrepareAnchorWindows(const ImageView& ref, const int* cols, const in
       sum_sq += w->value[k][a] * w->value[k][a];
     }
     w->fast |= 1u << a;
+    w->spread[a] = sum_sq;
     const bool textured = sum_sq / w->num_samples >= kMinNccVariance;
     if (textured) w->textured |= 1u << a;
     const float inv_norm = textured ? 1.0f / sqrtf(sum_sq) : 0.0f;
@@ -74,27 +80,35 @@ MSP_HD void PrepareAnchorWindows(const ImageView& ref, const int* cols, const in
   }
 }
 
-// Per-anchor source sums, and which anchors' windows were wholly inside the
-// source (the others take the general NccCost).
+// Per-anchor sums over the samples whose bilinear support lies in the
+// source: the source sums of a fast window, and the reference sums and count
+// that a window leaving the source in part needs (window_cost.h).
 struct AnchorSums {
   float s[kMaxAnchors], ss[kMaxAnchors], rs[kMaxAnchors];
-  uint32_t inside;
+  float r[kMaxAnchors], rr[kMaxAnchors], count[kMaxAnchors];
+  uint32_t inside;  // bit a: every sample of anchor a's window was valid
 };
 
 MSP_HD void AnchorSumsScalar(const AnchorWindows& w, const ImageView& src, const Mat3& H,
                              AnchorSums* out) {
   out->inside = 0u;
   for (int a = 0; a < kMaxAnchors; ++a) {
-    out->s[a] = out->ss[a] = out->rs[a] = 0.0f;
+    out->s[a] = out->ss[a] = out->rs[a] = out->r[a] = out->rr[a] = out->count[a] = 0.0f;
     if (!((w.fast >> a) & 1u)) continue;
     bool inside = true;
-    for (int k = 0; k < w.num_samples && inside; ++k) {
+    for (int k = 0; k < w.num_samples; ++k) {
       float s;
-      inside = SampleWarped(src, H, w.x[k][a], w.y[k][a], &s);
-      if (!inside) break;
+      if (!SampleWarped(src, H, w.x[k][a], w.y[k][a], &s)) {
+        inside = false;
+        continue;
+      }
+      const float r = w.value[k][a];
       out->s[a] += s;
       out->ss[a] += s * s;
-      out->rs[a] += w.value[k][a] * s;
+      out->rs[a] += r * s;
+      out->r[a] += r;
+      out->rr[a] += r * r;
+      out->count[a] += 1.0f;
     }
     if (inside) out->inside |= 1u << a;
   }
@@ -104,25 +118,33 @@ MSP_HD void AnchorSumsScalar(const AnchorWindows& w, const ImageView& src, const
 static_assert(kMaxAnchors == kWindowLanes, "one vector lane per anchor");
 
 // AnchorSumsScalar with sample k of the 8 anchors in one vector. A lane whose
-// sample leaves the source reads pixel 0 instead and is dropped at the end.
+// sample leaves the source reads pixel 0 instead, masked out of every sum.
 inline void AnchorSumsAvx2(const AnchorWindows& w, const ImageView& src, const Mat3& H,
                            AnchorSums* out) {
   const WarpLanes lanes = MakeWarpLanes(H, src);
   const __m256i lane_bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
   __m256 ok = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
       _mm256_and_si256(_mm256_set1_epi32(static_cast<int>(w.fast)), lane_bit), lane_bit));
-  __m256 sum_s = _mm256_setzero_ps(), sum_ss = _mm256_setzero_ps(), sum_rs = _mm256_setzero_ps();
+  const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
+  __m256 sum_s = zero, sum_ss = zero, sum_rs = zero, sum_r = zero, sum_rr = zero, count = zero;
   for (int k = 0; k < w.num_samples; ++k) {
     const WarpedCells cells = WarpCells(lanes, _mm256_loadu_ps(w.x[k]), _mm256_loadu_ps(w.y[k]));
     ok = _mm256_and_ps(ok, cells.inside);
-    const __m256 s = LoadBilinear(src, cells);
+    const __m256 s = _mm256_and_ps(LoadBilinear(src, cells), cells.inside);
+    const __m256 r = _mm256_and_ps(_mm256_loadu_ps(w.value[k]), cells.inside);
     sum_s = _mm256_add_ps(sum_s, s);
     sum_ss = _mm256_fmadd_ps(s, s, sum_ss);
-    sum_rs = _mm256_fmadd_ps(_mm256_loadu_ps(w.value[k]), s, sum_rs);
+    sum_rs = _mm256_fmadd_ps(r, s, sum_rs);
+    sum_r = _mm256_add_ps(sum_r, r);
+    sum_rr = _mm256_fmadd_ps(r, r, sum_rr);
+    count = _mm256_add_ps(count, _mm256_and_ps(one, cells.inside));
   }
   _mm256_storeu_ps(out->s, sum_s);
   _mm256_storeu_ps(out->ss, sum_ss);
   _mm256_storeu_ps(out->rs, sum_rs);
+  _mm256_storeu_ps(out->r, sum_r);
+  _mm256_storeu_ps(out->rr, sum_rr);
+  _mm256_storeu_ps(out->count, count);
   out->inside = static_cast<uint32_t>(_mm256_movemask_ps(ok));
 }
 #endif
@@ -156,9 +178,9 @@ MSP_HD void AnchorNccCosts(const AnchorSums& sums, int num_samples, float* costs
 #endif
 }
 
-// Sum over the anchors of 1 - NCC of each anchor window under H; `anchor_ncc`
-// (uniform weights, the anchor window's radius and step) serves the windows
-// that take the general path.
+// Sum over the anchors of 1 - NCC of each anchor window under H, by
+// NccCost's rules; `anchor_ncc` (uniform weights, the anchor window's radius
+// and step) serves the windows over the reference border.
 MSP_HD float AnchorCostSum(const AnchorWindows& w, const ImageView& ref, const ImageView& src,
                            const Mat3& H, const NccParams& anchor_ncc) {
   AnchorSums sums;
@@ -167,12 +189,20 @@ MSP_HD float AnchorCostSum(const AnchorWindows& w, const ImageView& ref, const I
   AnchorNccCosts(sums, w.num_samples, costs);
   float total = 0.0f;
   for (int a = 0; a < w.count; ++a) {
-    if (!((sums.inside >> a) & 1u)) {
+    if (!((w.fast >> a) & 1u)) {
       total += NccCost(ref, src, H, w.col[a], w.row[a], anchor_ncc);
-    } else if (!((w.textured >> a) & 1u)) {
-      total += kMaxCost;
+    } else if ((sums.inside >> a) & 1u) {
+      total += ((w.textured >> a) & 1u) ? costs[a] : kMaxCost;
+    } else if (CentreInSource(H, src, w.col[a], w.row[a])) {
+      const PartialSums partial{static_cast<int>(sums.count[a]),
+                                sums.r[a],
+                                sums.rr[a],
+                                sums.s[a],
+                                sums.ss[a],
+                                sums.rs[a]};
+      total += NccFromPartialSums(partial, w.num_samples, w.spread[a]);
     } else {
-      total += costs[a];
+      total += kMaxCost;
     }
   }
   return total;

@@ -79,16 +79,17 @@ MSP_HD PartialSums PartialWindowSums(const RefWindow& w, const ImageView& src, c
 #endif
 }
 
-// 1 - NCC over the valid samples of a partial window (NccCost's rules).
-MSP_HD float NccFromPartialSums(const PartialSums& a, const RefWindow& w) {
-  if (a.count == 0 || static_cast<float>(a.count) < kMinValidSampleShare * w.num_samples) {
+// 1 - NCC over the valid samples of a partial window of `num_samples`
+// samples whose raw reference values spread by `spread` (NccCost's rules).
+MSP_HD float NccFromPartialSums(const PartialSums& a, int num_samples, float spread) {
+  if (a.count == 0 || static_cast<float>(a.count) < kMinValidSampleShare * num_samples) {
     return kMaxCost;
   }
   const float n = static_cast<float>(a.count);
   const float spread_r = a.rr - a.r * a.r / n;  // in normalised units
   const float spread_s = a.ss - a.s * a.s / n;
-  // The reference texture test is on raw values: w.spread scales the units.
-  if (!(spread_r * w.spread >= kMinNccVariance * n) || !(spread_s >= kMinNccVariance * n)) {
+  // The reference texture test is on raw values: `spread` scales the units.
+  if (!(spread_r * spread >= kMinNccVariance * n) || !(spread_s >= kMinNccVariance * n)) {
     return kMaxCost;
   }
   const float cost = 1.0f - (a.rs - a.r * a.s / n) / sqrtf(spread_r * spread_s);
@@ -106,7 +107,7 @@ MSP_HD float WindowNccCost(const RefWindow& w, const ImageView& ref, const Image
   }
   // Part of the warped window leaves the source.
   if (!CentreInSource(H, src, w.col, w.row)) return kMaxCost;
-  return NccFromPartialSums(PartialWindowSums(w, src, H), w);
+  return NccFromPartialSums(PartialWindowSums(w, src, H), w.num_samples, w.spread);
 }
 
 }  // namespace core

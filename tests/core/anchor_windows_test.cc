@@ -59,12 +59,35 @@ TEST(AnchorWindows, ScalarAndVectorSumsAgree) {
   EXPECT_EQ(scalar.inside, vector.inside);
   EXPECT_NE(scalar.inside, 0u);
   EXPECT_NE(scalar.inside, 0xFFu);  // some windows left the source or the reference
+  // Anchor 4's right column leaves the source: its sums cover the other 6 samples.
+  EXPECT_EQ((scalar.inside >> 4) & 1u, 0u);
+  EXPECT_EQ(scalar.count[4], 6.0f);
   for (int a = 0; a < kMaxAnchors; ++a) {
-    if (!((scalar.inside >> a) & 1u)) continue;
+    if (!((w.fast >> a) & 1u)) continue;
+    EXPECT_EQ(scalar.count[a], vector.count[a]);
     EXPECT_NEAR(scalar.s[a], vector.s[a], 1e-4f);
     EXPECT_NEAR(scalar.ss[a], vector.ss[a], 1e-4f);
     EXPECT_NEAR(scalar.rs[a], vector.rs[a], 1e-5f);
+    EXPECT_NEAR(scalar.r[a], vector.r[a], 1e-5f);
+    EXPECT_NEAR(scalar.rr[a], vector.rr[a], 1e-5f);
   }
+}
+
+// A window that leaves the source in part is scored on its valid samples, as
+// NccCost scores it: here 6 of 9, enough for a real cost.
+TEST(AnchorWindows, PartialWindowCostsAsTheGeneralCost) {
+  const std::vector<float> ref = Noise(5), src = Noise(6);
+  const int col[1] = {57}, row[1] = {10};
+  AnchorWindows w;
+  PrepareAnchorWindows(View(ref), col, row, 1, 5, 5, &w);
+  ASSERT_EQ(w.fast, 1u);
+  const Mat3 H = Warp(2.5f, -1.5f);
+  AnchorSums sums;
+  AnchorSumsOf(w, View(src), H, &sums);
+  EXPECT_EQ(sums.inside, 0u);
+  const float expected = NccCost(View(ref), View(src), H, col[0], row[0], kAnchorNcc);
+  EXPECT_LT(expected, kMaxCost);
+  EXPECT_NEAR(AnchorCostSum(w, View(ref), View(src), H, kAnchorNcc), expected, 1e-5f);
 }
 
 TEST(AnchorWindows, FlatAnchorWindowCostsMax) {

@@ -141,12 +141,26 @@ MSP_HD float ViewCost(const PassParams& p, int j, int col, int row, const PlaneH
   return ViewCost(p, w, j, h);
 }
 
-// Costs of h in every view whose weight is non-zero (all views when weights is null).
+// Costs of h in every view whose weight is non-zero (all views when weights
+// is null): ViewCost of each view. The geometric terms come first, in a loop
+// of their own, so that their reads of the source depth maps, which mostly
+// miss the cache, wait together rather than one after each window.
 MSP_HD void ViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypothesis& h,
                       const float* weights, float* costs) {
   const PreparedPlane plane = PreparePlane(p, w.col, w.row, h);
+  if (!plane.valid) {
+    for (int j = 0; j < p.num_src; ++j) costs[j] = kMaxCost;
+    return;
+  }
+  float geometric[kMaxSourceViews];
   for (int j = 0; j < p.num_src; ++j) {
-    costs[j] = (weights == nullptr || weights[j] > 0.0f) ? ViewCost(p, w, j, plane) : kMaxCost;
+    const bool used = weights == nullptr || weights[j] > 0.0f;
+    geometric[j] = used ? GeometricTerm(p, j, w.col, w.row, plane.depth) : 0.0f;
+  }
+  for (int j = 0; j < p.num_src; ++j) {
+    costs[j] = (weights == nullptr || weights[j] > 0.0f)
+                   ? PhotometricViewCost(p, w, j, plane) + geometric[j]
+                   : kMaxCost;
   }
 }
 

@@ -99,7 +99,7 @@ MSP_HD void DeformableViewCosts(const PassParams& p, const DeformableWindows& w,
                                 const float* weights, float* costs, float* conventional) {
   const PreparedPlane plane = PreparePlane(p, w.centre.col, w.centre.row, h);
   for (int j = 0; j < p.num_src; ++j) {
-    if (weights == nullptr || weights[j] > 0.0f) {
+    if (IsWeighted(weights, j)) {
       costs[j] = DeformableViewCost(p, w, j, plane, d, &conventional[j]);
     } else {
       costs[j] = conventional[j] = kMaxCost;

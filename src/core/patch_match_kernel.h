@@ -141,6 +141,11 @@ MSP_HD float ViewCost(const PassParams& p, int j, int col, int row, const PlaneH
   return ViewCost(p, w, j, h);
 }
 
+// True when view j takes part: its weight is non-zero, or there are no weights.
+MSP_HD bool IsWeighted(const float* weights, int j) {
+  return weights == nullptr || weights[j] > 0.0f;
+}
+
 // Costs of h in every view whose weight is non-zero (all views when weights
 // is null): ViewCost of each view. The geometric terms come first, in a loop
 // of their own, so that their reads of the source depth maps, which mostly
@@ -154,13 +159,11 @@ MSP_HD void ViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypoth
   }
   float geometric[kMaxSourceViews];
   for (int j = 0; j < p.num_src; ++j) {
-    const bool used = weights == nullptr || weights[j] > 0.0f;
-    geometric[j] = used ? GeometricTerm(p, j, w.col, w.row, plane.depth) : 0.0f;
+    geometric[j] = IsWeighted(weights, j) ? GeometricTerm(p, j, w.col, w.row, plane.depth) : 0.0f;
   }
   for (int j = 0; j < p.num_src; ++j) {
-    costs[j] = (weights == nullptr || weights[j] > 0.0f)
-                   ? PhotometricViewCost(p, w, j, plane) + geometric[j]
-                   : kMaxCost;
+    costs[j] =
+        IsWeighted(weights, j) ? PhotometricViewCost(p, w, j, plane) + geometric[j] : kMaxCost;
   }
 }
 
@@ -169,8 +172,7 @@ MSP_HD void PhotometricViewCosts(const PassParams& p, const RefWindow& w, const 
                                  const float* weights, float* costs) {
   const PreparedPlane plane = PreparePlane(p, w.col, w.row, h);
   for (int j = 0; j < p.num_src; ++j) {
-    costs[j] =
-        (weights == nullptr || weights[j] > 0.0f) ? PhotometricViewCost(p, w, j, plane) : kMaxCost;
+    costs[j] = IsWeighted(weights, j) ? PhotometricViewCost(p, w, j, plane) : kMaxCost;
   }
 }
 

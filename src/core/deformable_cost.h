@@ -55,10 +55,31 @@ MSP_HD void PrepareDeformableWindows(const PassParams& p, int col, int row,
                        d.anchor_window_radius, d.anchor_window_step, &w->anchors);
 }
 
+// The photometric part of the deformable cost of a valid prepared
+// hypothesis at the centre pixel in source view j. `centre` receives the
+// centre window's NCC cost, the photometric part of ViewCost, which the
+// deformable cost computes on the way.
+MSP_HD float DeformablePhotometricCost(const PassParams& p, const DeformableWindows& w, int j,
+                                       const PreparedPlane& plane, const DeformableParams& d,
+                                       float* centre) {
+  const SourceView& s = p.src[j];
+  const Mat3 H = WarpHomography(s.rel, plane.warp);
+  *centre = WindowNccCost(w.centre, p.ref_image, s.image, H, p.ncc);
+  // A view that does not see p costs kMaxCost, as in every matching cost:
+  // anchors it does see do not make it a view of p.
+  if (w.anchors.count == 0 ||
+      (*centre >= kMaxCost && !CentreInSource(H, s.image, w.centre.col, w.centre.row))) {
+    return *centre;
+  }
+  // H maps every reference pixel on p's plane: an anchor window is the
+  // part of p's (deformed) patch that lies around the anchor.
+  const float sum = AnchorCostSum(w.anchors, p.ref_image, s.image, H, AnchorNccParams(p.ncc, d));
+  return d.lambda * *centre + (1.0f - d.lambda) * (sum / w.anchors.count);
+}
+
 // Deformable cost of a prepared hypothesis at the centre pixel in source
 // view j; the geometric term is added in geometric passes exactly as in
-// ViewCost. `conventional`, when given, receives ViewCost of the same plane,
-// which the centre window has computed on the way.
+// ViewCost. `conventional`, when given, receives ViewCost of the same plane.
 MSP_HD float DeformableViewCost(const PassParams& p, const DeformableWindows& w, int j,
                                 const PreparedPlane& plane, const DeformableParams& d,
                                 float* conventional = nullptr) {
@@ -66,21 +87,11 @@ MSP_HD float DeformableViewCost(const PassParams& p, const DeformableWindows& w,
     if (conventional != nullptr) *conventional = kMaxCost;
     return kMaxCost;
   }
-  const SourceView& s = p.src[j];
-  const Mat3 H = WarpHomography(s.rel, plane.warp);
-  const float centre = WindowNccCost(w.centre, p.ref_image, s.image, H, p.ncc);
+  float centre;
+  const float photometric = DeformablePhotometricCost(p, w, j, plane, d, &centre);
   const float geometric = GeometricTerm(p, j, w.centre.col, w.centre.row, plane.depth);
   if (conventional != nullptr) *conventional = centre + geometric;
-  // A view that does not see p costs kMaxCost, as in every matching cost:
-  // anchors it does see do not make it a view of p.
-  if (w.anchors.count == 0 ||
-      (centre >= kMaxCost && !CentreInSource(H, s.image, w.centre.col, w.centre.row))) {
-    return centre + geometric;
-  }
-  // H maps every reference pixel on p's plane: an anchor window is the
-  // part of p's (deformed) patch that lies around the anchor.
-  const float sum = AnchorCostSum(w.anchors, p.ref_image, s.image, H, AnchorNccParams(p.ncc, d));
-  return d.lambda * centre + (1.0f - d.lambda) * (sum / w.anchors.count) + geometric;
+  return photometric + geometric;
 }
 
 // One-off form for tests: prepares the windows itself.
@@ -93,14 +104,28 @@ MSP_HD float DeformableViewCost(const PassParams& p, int j, int col, int row,
 }
 
 // Deformable costs of h in every view with a non-zero weight (all when
-// null), and the conventional costs of the same views.
+// null), and the conventional costs of the same views. As in ViewCosts, the
+// geometric terms come first, in a loop of their own, so that their reads of
+// the source depth maps wait together.
 MSP_HD void DeformableViewCosts(const PassParams& p, const DeformableWindows& w,
                                 const PlaneHypothesis& h, const DeformableParams& d,
                                 const float* weights, float* costs, float* conventional) {
   const PreparedPlane plane = PreparePlane(p, w.centre.col, w.centre.row, h);
+  if (!plane.valid) {
+    for (int j = 0; j < p.num_src; ++j) costs[j] = conventional[j] = kMaxCost;
+    return;
+  }
+  float geometric[kMaxSourceViews];
+  for (int j = 0; j < p.num_src; ++j) {
+    geometric[j] = IsWeighted(weights, j)
+                       ? GeometricTerm(p, j, w.centre.col, w.centre.row, plane.depth)
+                       : 0.0f;
+  }
   for (int j = 0; j < p.num_src; ++j) {
     if (IsWeighted(weights, j)) {
-      costs[j] = DeformableViewCost(p, w, j, plane, d, &conventional[j]);
+      float centre;
+      costs[j] = DeformablePhotometricCost(p, w, j, plane, d, &centre) + geometric[j];
+      conventional[j] = centre + geometric[j];
     } else {
       costs[j] = conventional[j] = kMaxCost;
     }

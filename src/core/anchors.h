@@ -144,6 +144,7 @@ MSP_HD RayDirection DirectionAt(float degrees) {
 MSP_HD int CastAnchorRay(const AnchorMaps& maps, int col, int row, RayDirection sector,
                          RayDirection ray, int max_distance, const int* taken, int num_taken) {
   int walked_col = col, walked_row = row;  // the ray is clear of edges up to here
+  int crossing = -1;  // the last snapped hit found behind an edge (consecutive radii often repeat it)
   for (int radius = kFirstRayRadius; radius <= max_distance; radius = NextRayRadius(radius)) {
     const int c = static_cast<int>(floorf(col + ray.x * radius + 0.5f));
     const int r = static_cast<int>(floorf(row + ray.y * radius + 0.5f));
@@ -154,18 +155,24 @@ MSP_HD int CastAnchorRay(const AnchorMaps& maps, int col, int row, RayDirection 
     }
     walked_col = c;
     walked_row = r;
-    if (maps.classes[q] != kReliable) {
+    const bool snapped = maps.classes[q] != kReliable;
+    if (snapped) {
       q = maps.nearest[q];
-      if (q < 0) continue;
+      if (q < 0 || q == crossing) continue;
       const float ox = static_cast<float>(q % maps.width - col);
       const float oy = static_cast<float>(q / maps.width - row);
       const float len2 = ox * ox + oy * oy;
       if (len2 > static_cast<float>(max_distance) * max_distance || len2 <= 0.0f) continue;
       if (ox * sector.x + oy * sector.y < kHalfSectorCos * sqrtf(len2))
         continue;  // left the sector
-      if (CrossesDepthEdge(maps, col, row, q)) continue;
     }
-    if (maps.depth[q] > 0.0f && !Contains(taken, num_taken, q)) return q;
+    if (!(maps.depth[q] > 0.0f) || Contains(taken, num_taken, q)) continue;
+    // The walk to a snapped hit is the costly test: last, and once per hit.
+    if (snapped && CrossesDepthEdge(maps, col, row, q)) {
+      crossing = q;
+      continue;
+    }
+    return q;
   }
   return -1;
 }

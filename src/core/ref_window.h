@@ -6,8 +6,9 @@
 //   NCC = sum(r^ s) / sqrt(sum(s^2) - sum(s)^2 / n).
 // Windows the fast form cannot take (image border, bilateral weights, too many
 // samples) use the general NccCost; windows whose warp leaves the source in
-// part are summed over their valid samples (window_cost.h). Both forms give
-// the same cost up to float rounding.
+// part are summed over their valid samples (window_cost.h). A window over the
+// reference border keeps the samples inside the reference, as NccCost does.
+// Both forms give the same cost up to float rounding.
 #pragma once
 
 #include <cmath>
@@ -32,6 +33,7 @@ struct RefWindow {
   int row;
   int radius;
   int num_samples;  // 0: the window takes the general NccCost
+  int clipped;      // the window crosses the reference border: only its samples inside remain
   int textured;     // reference variance reaches kMinNccVariance
   float spread;     // sum of squared deviations of the raw reference values
   // Sample positions and normalised reference values; lanes from num_samples
@@ -52,19 +54,23 @@ MSP_HD void PrepareRefWindow(const ImageView& ref, int col, int row, int radius,
   w->num_samples = 0;
   w->textured = 1;
   const int per_side = 2 * radius / step + 1;
-  const bool inside = col - radius >= 0 && row - radius >= 0 && col + radius < ref.width &&
-                      row + radius < ref.height;
-  if (bilateral || !inside || per_side * per_side > kMaxFastWindowSamples) return;
+  w->clipped = !(col - radius >= 0 && row - radius >= 0 && col + radius < ref.width &&
+                 row + radius < ref.height);
+  if (bilateral || per_side * per_side > kMaxFastWindowSamples) return;
   int n = 0;
   float sum = 0.0f;
   for (int oy = -radius; oy <= radius; oy += step) {
-    for (int ox = -radius; ox <= radius; ox += step, ++n) {
-      w->x[n] = static_cast<float>(col + ox);
-      w->y[n] = static_cast<float>(row + oy);
-      w->value[n] = ref.At(col + ox, row + oy);
+    for (int ox = -radius; ox <= radius; ox += step) {
+      const int c = col + ox, r = row + oy;
+      if (c < 0 || r < 0 || c >= ref.width || r >= ref.height) continue;
+      w->x[n] = static_cast<float>(c);
+      w->y[n] = static_cast<float>(r);
+      w->value[n] = ref.At(c, r);
       sum += w->value[n];
+      ++n;
     }
   }
+  if (n == 0) return;  // a reference smaller than the window's step
   const float mean = sum / n;
   float sum_sq = 0.0f;
   for (int k = 0; k < n; ++k) {

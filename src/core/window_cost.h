@@ -1,6 +1,6 @@
-// The matching cost of a prepared reference window (ref_window.h), for every
-// window inside the reference: the whole window when its warp stays inside
-// the source, otherwise the samples that do. A partial window follows
+// The matching cost of a prepared reference window (ref_window.h): the whole
+// window when its warp stays inside the source, otherwise the samples that
+// do. A partial window follows
 // NccCost's rules: the centre must land in the source, at least
 // kMinValidSampleShare of the samples must, and both sides need texture over
 // those samples. NCC is invariant to an affine change of the reference values,
@@ -101,6 +101,9 @@ MSP_HD float NccFromPartialSums(const PartialSums& a, int num_samples, float spr
 MSP_HD float WindowNccCost(const RefWindow& w, const ImageView& ref, const ImageView& src,
                            const Mat3& H, const NccParams& p) {
   if (w.num_samples == 0) return NccCost(ref, src, H, w.col, w.row, p);
+  // A whole window implies its centre maps into the source only when the
+  // centre lies within its samples, which a clipped window's may not.
+  if (w.clipped && !CentreInSource(H, src, w.col, w.row)) return kMaxCost;
   SourceSums sums;
   if (WindowSums(w, src, H, &sums)) {
     return w.textured ? NccFromSourceSums(sums, w.num_samples) : kMaxCost;

@@ -48,6 +48,9 @@ struct DeformableSettings {
   // Depth edges of the segmentation prior that confine the anchor search
   // (1 byte per pixel, nonzero = edge); data == nullptr = unconfined.
   core::BoundaryView edges{nullptr, 0, 0, 0};
+  // The nearest edge pixel of every pixel (NearestMarkedPixels of the edges),
+  // or nullptr: lets the search skip walks that cannot reach an edge.
+  const int* nearest_edge = nullptr;
 };
 
 // Statistics of one call, for the log.

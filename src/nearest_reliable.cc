@@ -46,23 +46,23 @@ void EnvelopeRow(const int* row_of, int width, int row, int* nearest, std::vecto
   }
 }
 
-}  // namespace
-
-std::vector<int> NearestReliablePixels(const uint8_t* classes, int width, int height,
-                                       int num_threads) {
+// The nearest pixel i with is_feature(i), for every pixel.
+template <typename IsFeature>
+std::vector<int> NearestFeaturePixels(IsFeature is_feature, int width, int height,
+                                      int num_threads) {
   const size_t n = static_cast<size_t>(width) * height;
-  // First pass, per column: the row of the nearest reliable pixel in the column.
+  // First pass, per column: the row of the nearest feature pixel in the column.
   std::vector<int> column_row(n, kNone);
   ParallelFor(0, width, num_threads, [&](int col) {
     int last = kNone;
     for (int row = 0; row < height; ++row) {
-      if (classes[static_cast<size_t>(row) * width + col] == core::kReliable) last = row;
+      if (is_feature(static_cast<size_t>(row) * width + col)) last = row;
       column_row[static_cast<size_t>(row) * width + col] = last;
     }
     last = kNone;
     for (int row = height - 1; row >= 0; --row) {
       const size_t i = static_cast<size_t>(row) * width + col;
-      if (classes[i] == core::kReliable) last = row;
+      if (is_feature(i)) last = row;
       if (last != kNone && (column_row[i] == kNone || last - row < row - column_row[i])) {
         column_row[i] = last;
       }
@@ -77,6 +77,20 @@ std::vector<int> NearestReliablePixels(const uint8_t* classes, int width, int he
                 nearest.data() + static_cast<size_t>(row) * width, v, z);
   });
   return nearest;
+}
+
+}  // namespace
+
+std::vector<int> NearestReliablePixels(const uint8_t* classes, int width, int height,
+                                       int num_threads) {
+  return NearestFeaturePixels([classes](size_t i) { return classes[i] == core::kReliable; },
+                              width, height, num_threads);
+}
+
+std::vector<int> NearestMarkedPixels(const uint8_t* marks, int width, int height,
+                                     int num_threads) {
+  return NearestFeaturePixels([marks](size_t i) { return marks[i] != 0; }, width, height,
+                              num_threads);
 }
 
 }  // namespace msp

@@ -15,4 +15,9 @@ namespace msp {
 std::vector<int> NearestReliablePixels(const uint8_t* classes, int width, int height,
                                        int num_threads);
 
+// The same transform for the pixels with a nonzero mark (e.g. the depth edges
+// that confine the anchor search): the nearest marked pixel, or -1.
+std::vector<int> NearestMarkedPixels(const uint8_t* marks, int width, int height,
+                                     int num_threads);
+
 }  // namespace msp

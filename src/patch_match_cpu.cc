@@ -14,6 +14,7 @@
 #include "core/output_filter.h"
 #include "deformable_sweeps.h"
 #include "image_pyramid.h"
+#include "nearest_reliable.h"
 #include "parallel_for.h"
 #include "prior_driver.h"
 #include "seconds_since.h"
@@ -310,6 +311,8 @@ class CpuRunner {
       confining_.resize(edges.size());
       for (size_t i = 0; i < edges.size(); ++i) confining_[i] = edges[i] & kConfiningEdge;
       settings.edges = core::BoundaryView{confining_.data(), maps.width, maps.height, maps.width};
+      nearest_edge_ = NearestMarkedPixels(confining_.data(), maps.width, maps.height, threads_);
+      settings.nearest_edge = nearest_edge_.data();
     }
     const DeformableStats stats = RunDeformableCheckerboardIterations(
         params, maps, settings, kIterationsPerPass, threads_, prior_anchors);
@@ -406,6 +409,7 @@ class CpuRunner {
   std::unique_ptr<Level> coarser_;
   std::unique_ptr<PriorDriver> prior_;  // null = no segmentation prior
   std::vector<uint8_t> confining_;      // scratch: the confining bit of the current image
+  std::vector<int> nearest_edge_;       // scratch: its nearest confining pixel of every pixel
   std::chrono::steady_clock::time_point start_;
 };
 

@@ -104,9 +104,9 @@ DeformableStats RunDeformableCheckerboardIterations(
   std::vector<core::AnchorHits> hits(num_slots);
   std::vector<float> depth(n), normal(3 * n);
   const core::PlaneMapView planes{depth.data(), normal.data(), width, height};
-  const core::AnchorMaps anchor_maps{maps.classes.data(), maps.nearest.data(), depth.data(),
-                                     width,           height,          settings.edges,
-                                     settings.nearest_edge};
+  const core::AnchorMaps anchor_maps{
+      maps.classes.data(), maps.nearest.data(),  depth.data(), width, height,
+      settings.edges,      settings.nearest_edge};
   DeformableStats stats;
   for (int iteration = 0; iteration < num_iterations; ++iteration) {
     depth.assign(s.depth, s.depth + n);

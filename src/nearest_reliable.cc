@@ -83,12 +83,11 @@ std::vector<int> NearestFeaturePixels(IsFeature is_feature, int width, int heigh
 
 std::vector<int> NearestReliablePixels(const uint8_t* classes, int width, int height,
                                        int num_threads) {
-  return NearestFeaturePixels([classes](size_t i) { return classes[i] == core::kReliable; },
-                              width, height, num_threads);
+  return NearestFeaturePixels([classes](size_t i) { return classes[i] == core::kReliable; }, width,
+                              height, num_threads);
 }
 
-std::vector<int> NearestMarkedPixels(const uint8_t* marks, int width, int height,
-                                     int num_threads) {
+std::vector<int> NearestMarkedPixels(const uint8_t* marks, int width, int height, int num_threads) {
   return NearestFeaturePixels([marks](size_t i) { return marks[i] != 0; }, width, height,
                               num_threads);
 }

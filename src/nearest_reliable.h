@@ -2,6 +2,8 @@
 // hit of the anchor search snaps to it. An exact Euclidean feature transform
 // (Felzenszwalb & Huttenlocher's lower envelope of parabolas, a column pass
 // then a row pass), linear in the number of pixels, instead of a 201x201 scan.
+// The same transform of the depth edges lets the confined search skip walks
+// that cannot reach an edge.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +19,6 @@ std::vector<int> NearestReliablePixels(const uint8_t* classes, int width, int he
 
 // The same transform for the pixels with a nonzero mark (e.g. the depth edges
 // that confine the anchor search): the nearest marked pixel, or -1.
-std::vector<int> NearestMarkedPixels(const uint8_t* marks, int width, int height,
-                                     int num_threads);
+std::vector<int> NearestMarkedPixels(const uint8_t* marks, int width, int height, int num_threads);
 
 }  // namespace msp

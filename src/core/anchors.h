@@ -167,7 +167,8 @@ MSP_HD RayDirection DirectionAt(float degrees) {
 MSP_HD int CastAnchorRay(const AnchorMaps& maps, int col, int row, RayDirection sector,
                          RayDirection ray, int max_distance, const int* taken, int num_taken) {
   int walked_col = col, walked_row = row;  // the ray is clear of edges up to here
-  int crossing = -1;  // the last snapped hit found behind an edge (consecutive radii often repeat it)
+  // The last snapped hit found behind an edge: consecutive radii often repeat it.
+  int crossing = -1;
   for (int radius = kFirstRayRadius; radius <= max_distance; radius = NextRayRadius(radius)) {
     const int c = static_cast<int>(floorf(col + ray.x * radius + 0.5f));
     const int r = static_cast<int>(floorf(row + ray.y * radius + 0.5f));

@@ -4,11 +4,11 @@
 // sample positions and the reference intensities normalised to zero mean and
 // unit norm. A cost then needs only three source sums:
 //   NCC = sum(r^ s) / sqrt(sum(s^2) - sum(s)^2 / n).
-// Windows the fast form cannot take (image border, bilateral weights, too many
-// samples) use the general NccCost; windows whose warp leaves the source in
-// part are summed over their valid samples (window_cost.h). A window over the
-// reference border keeps the samples inside the reference, as NccCost does.
-// Both forms give the same cost up to float rounding.
+// Windows the fast form cannot take (bilateral weights, too many samples) use
+// the general NccCost; windows whose warp leaves the source in part are summed
+// over their valid samples (window_cost.h). A window over the reference border
+// keeps the samples inside the reference, as NccCost does. Both forms give the
+// same cost up to float rounding.
 #pragma once
 
 #include <cmath>

@@ -1,10 +1,9 @@
 // The matching cost of a prepared reference window (ref_window.h): the whole
 // window when its warp stays inside the source, otherwise the samples that
-// do. A partial window follows
-// NccCost's rules: the centre must land in the source, at least
-// kMinValidSampleShare of the samples must, and both sides need texture over
-// those samples. NCC is invariant to an affine change of the reference values,
-// so the normalised values serve for any subset.
+// do. A partial window follows NccCost's rules: the centre must land in the
+// source, at least kMinValidSampleShare of the samples must, and both sides
+// need texture over those samples. NCC is invariant to an affine change of
+// the reference values, so the normalised values serve for any subset.
 #pragma once
 
 #include <cmath>

@@ -73,5 +73,22 @@ TEST(NearestReliable, SinglePixelAndEmptyImages) {
             std::vector<int>(40 * 30, 7 * 40 + 33));
 }
 
+// Marks (the depth edges of the anchor search) take the same transform: the
+// nearest marked pixel is at the nearest reliable pixel's distance when the
+// marked pixels are the reliable ones.
+TEST(NearestReliable, MarkedPixelsTakeTheSameTransform) {
+  const std::vector<uint8_t> classes = RandomLayout(53, 41, 0.05f, 5);
+  std::vector<uint8_t> marks(classes.size());
+  for (size_t i = 0; i < classes.size(); ++i) marks[i] = classes[i] == core::kReliable ? 7 : 0;
+  const std::vector<int> reliable = NearestReliablePixels(classes.data(), 53, 41, 1);
+  const std::vector<int> marked = NearestMarkedPixels(marks.data(), 53, 41, 2);
+  ASSERT_EQ(marked.size(), reliable.size());
+  for (int i = 0; i < 53 * 41; ++i) {
+    ASSERT_GE(marked[i], 0);
+    EXPECT_NE(marks[marked[i]], 0);
+    EXPECT_EQ(SquaredDistance(i, marked[i], 53), SquaredDistance(i, reliable[i], 53));
+  }
+}
+
 }  // namespace
 }  // namespace msp

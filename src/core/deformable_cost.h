@@ -104,9 +104,8 @@ MSP_HD float DeformableViewCost(const PassParams& p, int j, int col, int row,
 }
 
 // Deformable costs of h in every view with a non-zero weight (all when
-// null), and the conventional costs of the same views. As in ViewCosts, the
-// geometric terms come first, in a loop of their own, so that their reads of
-// the source depth maps wait together.
+// null), and the conventional costs of the same views; the geometric terms
+// first, as in ViewCosts.
 MSP_HD void DeformableViewCosts(const PassParams& p, const DeformableWindows& w,
                                 const PlaneHypothesis& h, const DeformableParams& d,
                                 const float* weights, float* costs, float* conventional) {
@@ -116,11 +115,7 @@ MSP_HD void DeformableViewCosts(const PassParams& p, const DeformableWindows& w,
     return;
   }
   float geometric[kMaxSourceViews];
-  for (int j = 0; j < p.num_src; ++j) {
-    geometric[j] = IsWeighted(weights, j)
-                       ? GeometricTerm(p, j, w.centre.col, w.centre.row, plane.depth)
-                       : 0.0f;
-  }
+  GeometricTerms(p, w.centre.col, w.centre.row, plane, weights, geometric);
   for (int j = 0; j < p.num_src; ++j) {
     if (IsWeighted(weights, j)) {
       float centre;

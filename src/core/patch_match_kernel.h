@@ -146,10 +146,19 @@ MSP_HD bool IsWeighted(const float* weights, int j) {
   return weights == nullptr || weights[j] > 0.0f;
 }
 
+// The geometric terms of a valid prepared plane in every view that takes
+// part (0 for the others). The costs over all views call this before their
+// windows, in a loop of its own, so that its reads of the source depth maps,
+// which mostly miss the cache, wait together rather than one after each window.
+MSP_HD void GeometricTerms(const PassParams& p, int col, int row, const PreparedPlane& plane,
+                           const float* weights, float* geometric) {
+  for (int j = 0; j < p.num_src; ++j) {
+    geometric[j] = IsWeighted(weights, j) ? GeometricTerm(p, j, col, row, plane.depth) : 0.0f;
+  }
+}
+
 // Costs of h in every view whose weight is non-zero (all views when weights
-// is null): ViewCost of each view. The geometric terms come first, in a loop
-// of their own, so that their reads of the source depth maps, which mostly
-// miss the cache, wait together rather than one after each window.
+// is null): ViewCost of each view, the geometric terms first (GeometricTerms).
 MSP_HD void ViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypothesis& h,
                       const float* weights, float* costs) {
   const PreparedPlane plane = PreparePlane(p, w.col, w.row, h);
@@ -158,9 +167,7 @@ MSP_HD void ViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypoth
     return;
   }
   float geometric[kMaxSourceViews];
-  for (int j = 0; j < p.num_src; ++j) {
-    geometric[j] = IsWeighted(weights, j) ? GeometricTerm(p, j, w.col, w.row, plane.depth) : 0.0f;
-  }
+  GeometricTerms(p, w.col, w.row, plane, weights, geometric);
   for (int j = 0; j < p.num_src; ++j) {
     costs[j] =
         IsWeighted(weights, j) ? PhotometricViewCost(p, w, j, plane) + geometric[j] : kMaxCost;

@@ -161,16 +161,8 @@ MSP_HD void AnchorSumsOf(const AnchorWindows& w, const ImageView& src, const Mat
 // 1 - NCC of every anchor from its source sums (NccFromSourceSums per lane).
 MSP_HD void AnchorNccCosts(const AnchorSums& sums, int num_samples, float* costs) {
 #if defined(MSP_WINDOW_SUMS_AVX2)
-  const __m256 n = _mm256_set1_ps(static_cast<float>(num_samples));
-  const __m256 s = _mm256_loadu_ps(sums.s), rs = _mm256_loadu_ps(sums.rs);
-  const __m256 spread = _mm256_fnmadd_ps(s, _mm256_div_ps(s, n), _mm256_loadu_ps(sums.ss));
-  const __m256 textured =
-      _mm256_cmp_ps(spread, _mm256_mul_ps(_mm256_set1_ps(kMinNccVariance), n), _CMP_GE_OQ);
-  const __m256 max_cost = _mm256_set1_ps(kMaxCost);
-  __m256 cost = _mm256_sub_ps(_mm256_set1_ps(1.0f), _mm256_div_ps(rs, _mm256_sqrt_ps(spread)));
-  cost = _mm256_min_ps(_mm256_max_ps(cost, _mm256_setzero_ps()), max_cost);
-  // Untextured lanes (and the NaN of a negative spread) cost kMaxCost.
-  _mm256_storeu_ps(costs, _mm256_blendv_ps(max_cost, cost, textured));
+  _mm256_storeu_ps(costs, NccFromSourceSumLanes(_mm256_loadu_ps(sums.s), _mm256_loadu_ps(sums.ss),
+                                                _mm256_loadu_ps(sums.rs), num_samples));
 #else
   for (int a = 0; a < kMaxAnchors; ++a) {
     costs[a] = NccFromSourceSums(SourceSums{sums.s[a], sums.ss[a], sums.rs[a]}, num_samples);

@@ -55,6 +55,24 @@ MSP_HD void PrepareDeformableWindows(const PassParams& p, int col, int row,
                        d.anchor_window_radius, d.anchor_window_step, &w->anchors);
 }
 
+// The photometric part of the deformable cost in source view j under H
+// (p's plane), given the centre window's NCC cost `centre`: the anchor
+// windows' costs are added to it.
+MSP_HD float DeformableFromCentre(const PassParams& p, const DeformableWindows& w, int j,
+                                  const Mat3& H, float centre, const DeformableParams& d) {
+  const SourceView& s = p.src[j];
+  // A view that does not see p costs kMaxCost, as in every matching cost:
+  // anchors it does see do not make it a view of p.
+  if (w.anchors.count == 0 ||
+      (centre >= kMaxCost && !CentreInSource(H, s.image, w.centre.col, w.centre.row))) {
+    return centre;
+  }
+  // H maps every reference pixel on p's plane: an anchor window is the
+  // part of p's (deformed) patch that lies around the anchor.
+  const float sum = AnchorCostSum(w.anchors, p.ref_image, s.image, H, AnchorNccParams(p.ncc, d));
+  return d.lambda * centre + (1.0f - d.lambda) * (sum / w.anchors.count);
+}
+
 // The photometric part of the deformable cost of a valid prepared
 // hypothesis at the centre pixel in source view j. `centre` receives the
 // centre window's NCC cost, the photometric part of ViewCost, which the
@@ -62,19 +80,9 @@ MSP_HD void PrepareDeformableWindows(const PassParams& p, int col, int row,
 MSP_HD float DeformablePhotometricCost(const PassParams& p, const DeformableWindows& w, int j,
                                        const PreparedPlane& plane, const DeformableParams& d,
                                        float* centre) {
-  const SourceView& s = p.src[j];
-  const Mat3 H = WarpHomography(s.rel, plane.warp);
-  *centre = WindowNccCost(w.centre, p.ref_image, s.image, H, p.ncc);
-  // A view that does not see p costs kMaxCost, as in every matching cost:
-  // anchors it does see do not make it a view of p.
-  if (w.anchors.count == 0 ||
-      (*centre >= kMaxCost && !CentreInSource(H, s.image, w.centre.col, w.centre.row))) {
-    return *centre;
-  }
-  // H maps every reference pixel on p's plane: an anchor window is the
-  // part of p's (deformed) patch that lies around the anchor.
-  const float sum = AnchorCostSum(w.anchors, p.ref_image, s.image, H, AnchorNccParams(p.ncc, d));
-  return d.lambda * *centre + (1.0f - d.lambda) * (sum / w.anchors.count);
+  const Mat3 H = WarpHomography(p.src[j].rel, plane.warp);
+  *centre = WindowNccCost(w.centre, p.ref_image, p.src[j].image, H, p.ncc);
+  return DeformableFromCentre(p, w, j, H, *centre, d);
 }
 
 // Deformable cost of a prepared hypothesis at the centre pixel in source
@@ -123,6 +131,34 @@ MSP_HD void DeformableViewCosts(const PassParams& p, const DeformableWindows& w,
       conventional[j] = centre + geometric[j];
     } else {
       costs[j] = conventional[j] = kMaxCost;
+    }
+  }
+}
+
+static_assert(kMaxAnchors <= kWindowLanes, "one vector lane per anchor's candidate");
+
+// DeformableViewCosts in every view of up to kWindowLanes hypotheses h[k]
+// (rows kMaxSourceViews apart; rows whose `has` is false cost kMaxCost), the
+// centre windows of all of them at once per view, as CandidateViewCosts.
+MSP_HD void DeformableCandidateViewCosts(const PassParams& p, const DeformableWindows& w,
+                                         const PlaneHypothesis* h, const bool* has, int num,
+                                         const DeformableParams& d, float* costs,
+                                         float* conventional) {
+  PreparedPlane planes[kWindowLanes];
+  float geometric[kWindowLanes][kMaxSourceViews];
+  const uint32_t lanes = PrepareCandidates(p, w.centre, h, has, num, planes, geometric);
+  for (int j = 0; j < p.num_src; ++j) {
+    Mat3 H[kWindowLanes];
+    float centre[kWindowLanes];
+    CandidateWindowCosts(p, w.centre, j, planes, lanes, num, H, centre);
+    for (int k = 0; k < num; ++k) {
+      const int i = k * kMaxSourceViews + j;
+      if ((lanes >> k) & 1u) {
+        costs[i] = DeformableFromCentre(p, w, j, H[k], centre[k], d) + geometric[k][j];
+        conventional[i] = centre[k] + geometric[k][j];
+      } else {
+        costs[i] = conventional[i] = kMaxCost;
+      }
     }
   }
 }

@@ -77,15 +77,7 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
   DeformableWindows windows;
   PrepareDeformableWindows(p, col, row, anchors, d, &windows);
   // The anchors' candidates in every view: view selection reads them all.
-  for (int k = 0; k < fit; ++k) {
-    float* row_costs = costs + k * kMaxSourceViews;
-    float* row_conventional = conventional + k * kMaxSourceViews;
-    if (has[k]) {
-      DeformableViewCosts(p, windows, cand[k], d, nullptr, row_costs, row_conventional);
-    } else {
-      for (int j = 0; j < p.num_src; ++j) row_costs[j] = row_conventional[j] = kMaxCost;
-    }
-  }
+  DeformableCandidateViewCosts(p, windows, cand, has, fit, d, costs, conventional);
   Rng select_rng =
       MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamSelect, pixel));
   float weights[kMaxSourceViews];

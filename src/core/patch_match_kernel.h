@@ -17,6 +17,7 @@
 #include "core/plane.h"
 #include "core/rng.h"
 #include "core/view_selection.h"
+#include "core/window_batch.h"
 #include "core/window_cost.h"
 
 namespace msp {
@@ -174,6 +175,54 @@ MSP_HD void ViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypoth
   }
 }
 
+static_assert(kNumPropagationCandidates <= kWindowLanes, "one vector lane per candidate");
+
+// Prepares up to kWindowLanes hypotheses h[k] whose `has` is set, and their
+// geometric terms in every view; returns the lanes whose plane is valid.
+MSP_HD uint32_t PrepareCandidates(const PassParams& p, const RefWindow& w, const PlaneHypothesis* h,
+                                  const bool* has, int num, PreparedPlane* planes,
+                                  float (*geometric)[kMaxSourceViews]) {
+  uint32_t lanes = 0u;
+  for (int k = 0; k < num; ++k) {
+    if (!has[k]) continue;
+    planes[k] = PreparePlane(p, w.col, w.row, h[k]);
+    if (!planes[k].valid) continue;
+    lanes |= 1u << k;
+    GeometricTerms(p, w.col, w.row, planes[k], nullptr, geometric[k]);
+  }
+  return lanes;
+}
+
+// The homographies H[k] into source view j of the prepared candidates in
+// `lanes`, and the NCC costs of window w under all of them at once.
+MSP_HD void CandidateWindowCosts(const PassParams& p, const RefWindow& w, int j,
+                                 const PreparedPlane* planes, uint32_t lanes, int num, Mat3* H,
+                                 float* ncc) {
+  for (int k = 0; k < num; ++k) {
+    if ((lanes >> k) & 1u) H[k] = WarpHomography(p.src[j].rel, planes[k].warp);
+  }
+  WindowNccCosts(w, p.ref_image, p.src[j].image, H, lanes, p.ncc, ncc);
+}
+
+// ViewCosts in every view of up to kWindowLanes hypotheses h[k] (the rows of
+// `costs`, kMaxSourceViews apart); rows whose `has` is false cost kMaxCost.
+// One view at a time, the window is scored under all of them at once
+// (WindowNccCosts); the geometric terms come first, as in ViewCosts.
+MSP_HD void CandidateViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypothesis* h,
+                               const bool* has, int num, float* costs) {
+  PreparedPlane planes[kWindowLanes];
+  float geometric[kWindowLanes][kMaxSourceViews];
+  const uint32_t lanes = PrepareCandidates(p, w, h, has, num, planes, geometric);
+  for (int j = 0; j < p.num_src; ++j) {
+    Mat3 H[kWindowLanes];
+    float ncc[kWindowLanes];
+    CandidateWindowCosts(p, w, j, planes, lanes, num, H, ncc);
+    for (int k = 0; k < num; ++k) {
+      costs[k * kMaxSourceViews + j] = ((lanes >> k) & 1u) ? ncc[k] + geometric[k][j] : kMaxCost;
+    }
+  }
+}
+
 // The NCC costs alone (ViewCosts without the geometric term).
 MSP_HD void PhotometricViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypothesis& h,
                                  const float* weights, float* costs) {
@@ -317,14 +366,7 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
   RefWindow w;
   PrepareWindow(p, col, row, &w);
   // The propagated candidates in every view: view selection reads them all.
-  for (int k = 0; k < kNumPropagationCandidates; ++k) {
-    float* row_costs = costs + k * kMaxSourceViews;
-    if (has[k]) {
-      ViewCosts(p, w, cand[k], nullptr, row_costs);
-    } else {
-      for (int j = 0; j < p.num_src; ++j) row_costs[j] = kMaxCost;
-    }
-  }
+  CandidateViewCosts(p, w, cand, has, kNumPropagationCandidates, costs);
   Rng select_rng =
       MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamSelect, pixel));
   float weights[kMaxSourceViews];

@@ -148,5 +148,20 @@ MSP_HD float NccFromSourceSums(const SourceSums& a, int n) {
   return cost < 0.0f ? 0.0f : (cost > kMaxCost ? kMaxCost : cost);
 }
 
+#if defined(MSP_WINDOW_SUMS_AVX2)
+// NccFromSourceSums of eight windows at once, one per lane.
+inline __m256 NccFromSourceSumLanes(__m256 s, __m256 ss, __m256 rs, int num_samples) {
+  const __m256 n = _mm256_set1_ps(static_cast<float>(num_samples));
+  const __m256 spread = _mm256_fnmadd_ps(s, _mm256_div_ps(s, n), ss);
+  const __m256 textured =
+      _mm256_cmp_ps(spread, _mm256_mul_ps(_mm256_set1_ps(kMinNccVariance), n), _CMP_GE_OQ);
+  const __m256 max_cost = _mm256_set1_ps(kMaxCost);
+  __m256 cost = _mm256_sub_ps(_mm256_set1_ps(1.0f), _mm256_div_ps(rs, _mm256_sqrt_ps(spread)));
+  cost = _mm256_min_ps(_mm256_max_ps(cost, _mm256_setzero_ps()), max_cost);
+  // Untextured lanes (and the NaN of a negative spread) cost kMaxCost.
+  return _mm256_blendv_ps(max_cost, cost, textured);
+}
+#endif
+
 }  // namespace core
 }  // namespace msp

@@ -100,6 +100,45 @@ TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
   EXPECT_EQ(conventional[0], kMaxCost);
 }
 
+// The anchors' candidates scored together (one vector lane each) cost, row
+// by row, what DeformableViewCosts gives each alone; a row without a
+// candidate costs kMaxCost.
+TEST(DeformableCost, CandidateRowsCostWhatEachCandidateCostsAlone) {
+  testing_scene::PlaneScene s;
+  testing_scene::MakeScene(4.0f, true, &s);
+  const int ring[kMaxAnchors][2] = {{20, 0},  {14, 14},   {0, 20},  {-14, 14},
+                                    {-20, 0}, {-14, -14}, {0, -20}, {14, -14}};
+  const AnchorSet a = AnchorsAt(ring, kMaxAnchors, kCol, kRow);
+  const DeformableParams d = DefaultDeformableParams();
+  DeformableWindows windows;
+  PrepareDeformableWindows(s.params, kCol, kRow, a, d, &windows);
+  PlaneHypothesis h[kMaxAnchors];
+  bool has[kMaxAnchors];
+  for (int k = 0; k < kMaxAnchors; ++k) {
+    h[k] = PlaneHypothesis{3.7f + 0.1f * k, Normalized(Vec3{0.05f * (k - 4), 0.02f * k, -1.0f})};
+    has[k] = k != 5;
+  }
+  h[3] = PlaneHypothesis{4.0f, kFrontoParallel};  // the truth
+  float costs[kMaxAnchors * kMaxSourceViews], conventional[kMaxAnchors * kMaxSourceViews];
+  DeformableCandidateViewCosts(s.params, windows, h, has, kMaxAnchors, d, costs, conventional);
+  for (int k = 0; k < kMaxAnchors; ++k) {
+    float alone[kMaxSourceViews], alone_conventional[kMaxSourceViews];
+    DeformableViewCosts(s.params, windows, h[k], d, nullptr, alone, alone_conventional);
+    for (int j = 0; j < s.params.num_src; ++j) {
+      const int i = k * kMaxSourceViews + j;
+      if (!has[k]) {
+        EXPECT_EQ(costs[i], kMaxCost);
+        EXPECT_EQ(conventional[i], kMaxCost);
+        continue;
+      }
+      EXPECT_NEAR(costs[i], alone[j], 1e-4f) << k << " " << j;
+      EXPECT_NEAR(conventional[i], alone_conventional[j], 1e-4f) << k << " " << j;
+    }
+  }
+  EXPECT_LT(costs[3 * kMaxSourceViews], 0.05f);
+  EXPECT_GT(costs[0], 0.3f);  // depth 3.7, tilted
+}
+
 TEST(DeformableCost, TexturedAnchorsRescueATexturelessCentre) {
   // The reference is flat inside a disk of radius 12 around p: the centre
   // window alone has no signal (cost 2), the anchors outside still match.

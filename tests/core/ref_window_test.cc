@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/rng.h"
+#include "core/window_batch.h"
 #include "core/window_cost.h"
 
 namespace msp {
@@ -155,6 +156,47 @@ TEST(RefWindow, BorderWindowCostEqualsTheGeneralNcc) {
   ASSERT_TRUE(WindowSumsScalar(corner, View(src), half_left_up, &sums));
   EXPECT_EQ(NccCost(View(ref), View(src), half_left_up, 0, 0, kUniform), kMaxCost);
   EXPECT_EQ(WindowNccCost(corner, View(ref), View(src), half_left_up, kUniform), kMaxCost);
+}
+
+// Eight warps at once, lane by lane the same cost as WindowNccCost alone:
+// windows inside the source, leaving it in part, leaving it whole, over the
+// reference border, and a lane left unused.
+TEST(RefWindow, BatchOfWarpsCostsWhatEachWarpCostsAlone) {
+  const std::vector<float> ref = Noise(11);
+  const std::vector<float> src = Noise(12);
+  const Mat3 H[kWindowLanes] = {Warp(0.3f, -0.4f), Warp(-0.6f, 0.7f), Warp(1.7f, 0.6f),
+                                Warp(9.5f, 0.2f),  Warp(-8.0f, 3.0f), Warp(60.0f, 0.0f),
+                                Warp(2.2f, -7.5f), Warp(0.0f, 0.0f)};
+  const uint32_t lanes = 0x7fu;  // lane 7 unused
+  int compared = 0, partial = 0, clipped = 0;
+  for (int row = 0; row < kH; ++row) {
+    for (int col = 0; col < kW; ++col) {
+      RefWindow w;
+      PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
+      float costs[kWindowLanes];
+      WindowNccCosts(w, View(ref), View(src), H, lanes, kUniform, costs);
+      for (int l = 0; l < 7; ++l) {
+        EXPECT_NEAR(costs[l], WindowNccCost(w, View(ref), View(src), H[l], kUniform), 2e-4f)
+            << col << "," << row << " lane " << l;
+        SourceSums sums;
+        partial += !WindowSumsScalar(w, View(src), H[l], &sums) &&
+                   CentreInSource(H[l], View(src), col, row) && costs[l] < kMaxCost;
+        ++compared;
+      }
+      clipped += w.clipped;
+      EXPECT_EQ(costs[7], kMaxCost);
+    }
+  }
+  EXPECT_EQ(compared, 7 * kW * kH);
+  EXPECT_GT(partial, 500);  // partial windows with a cost were among them
+  EXPECT_GT(clipped, 500);
+  // An untextured reference window costs kMaxCost in every lane.
+  const std::vector<float> flat(kW * kH, 0.5f);
+  RefWindow w;
+  PrepareRefWindow(View(flat), 20, 15, 5, 2, 0, &w);
+  float costs[kWindowLanes];
+  WindowNccCosts(w, View(flat), View(src), H, lanes, kUniform, costs);
+  for (int l = 0; l < kWindowLanes; ++l) EXPECT_EQ(costs[l], kMaxCost);
 }
 
 TEST(RefWindow, PartialWindowNeedsItsCentreAndHalfTheSamples) {

@@ -1,0 +1,112 @@
+// The matching cost of one reference window under several homographies at
+// once: the candidates of a pixel update in one source view. Propagation
+// scores 8 candidate planes per view, and a window's 36 samples fill 4.5
+// vectors, while 8 candidates fill whole vectors exactly: sample k of all 8
+// candidates is warped in one vector, each lane with its own homography. The
+// sums then come out per lane with no horizontal adds, and one vector
+// finishes all 8 costs, by WindowNccCost's rules (whole, partial and clipped
+// windows alike). Where the build has no vector path, each lane takes
+// WindowNccCost.
+#pragma once
+
+#include <cstdint>
+
+#include "core/hd.h"
+#include "core/homography.h"
+#include "core/image_view.h"
+#include "core/limits.h"
+#include "core/ncc.h"
+#include "core/ref_window.h"
+#include "core/window_cost.h"
+
+namespace msp {
+namespace core {
+
+// WindowNccCost of w under H[l] for every lane l set in `lanes` (at most
+// kWindowLanes); the other lanes cost kMaxCost.
+MSP_HD void WindowNccCostsScalar(const RefWindow& w, const ImageView& ref, const ImageView& src,
+                                 const Mat3* H, uint32_t lanes, const NccParams& p, float* costs) {
+  for (int l = 0; l < kWindowLanes; ++l) {
+    costs[l] = ((lanes >> l) & 1u) ? WindowNccCost(w, ref, src, H[l], p) : kMaxCost;
+  }
+}
+
+#if defined(MSP_WINDOW_SUMS_AVX2)
+inline void WindowNccCostsAvx2(const RefWindow& w, const ImageView& ref, const ImageView& src,
+                               const Mat3* H, uint32_t lanes, const NccParams& p, float* costs) {
+  if (w.num_samples == 0) {
+    WindowNccCostsScalar(w, ref, src, H, lanes, p, costs);
+    return;
+  }
+  // Lane l of h[i] is H[l].m[i]; unused lanes get 0, which no sample passes.
+  alignas(32) float columns[9][kWindowLanes];
+  for (int l = 0; l < kWindowLanes; ++l) {
+    const bool used = (lanes >> l) & 1u;
+    for (int i = 0; i < 9; ++i) columns[i][l] = used ? H[l].m[i] : 0.0f;
+  }
+  WarpLanes warp;
+  for (int i = 0; i < 9; ++i) warp.h[i] = _mm256_load_ps(columns[i]);
+  warp.max_u = _mm256_set1_ps(src.width - 1.0f);
+  warp.max_v = _mm256_set1_ps(src.height - 1.0f);
+  warp.pitch = _mm256_set1_epi32(src.pitch);
+  // Samples that leave the source read pixel 0 and are masked out of every
+  // sum; the reference sums and the count serve the lanes that lose some.
+  const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
+  __m256 sum_s = zero, sum_ss = zero, sum_rs = zero, sum_r = zero, sum_rr = zero, count = zero;
+  __m256 whole = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
+  for (int k = 0; k < w.num_samples; ++k) {
+    const WarpedCells cells = WarpCells(warp, _mm256_set1_ps(w.x[k]), _mm256_set1_ps(w.y[k]));
+    whole = _mm256_and_ps(whole, cells.inside);
+    const __m256 s = _mm256_and_ps(LoadBilinear(src, cells), cells.inside);
+    const __m256 r = _mm256_and_ps(_mm256_set1_ps(w.value[k]), cells.inside);
+    sum_s = _mm256_add_ps(sum_s, s);
+    sum_ss = _mm256_fmadd_ps(s, s, sum_ss);
+    sum_rs = _mm256_fmadd_ps(r, s, sum_rs);
+    sum_r = _mm256_add_ps(sum_r, r);
+    sum_rr = _mm256_fmadd_ps(r, r, sum_rr);
+    count = _mm256_add_ps(count, _mm256_and_ps(one, cells.inside));
+  }
+  const __m256 cost = w.textured ? NccFromSourceSumLanes(sum_s, sum_ss, sum_rs, w.num_samples)
+                                 : _mm256_set1_ps(kMaxCost);
+  _mm256_storeu_ps(costs, cost);
+  const uint32_t whole_lanes = static_cast<uint32_t>(_mm256_movemask_ps(whole));
+  if ((whole_lanes & lanes) == lanes && !w.clipped) {
+    for (int l = 0; l < kWindowLanes; ++l) {
+      if (!((lanes >> l) & 1u)) costs[l] = kMaxCost;
+    }
+    return;
+  }
+  alignas(32) float s[kWindowLanes], ss[kWindowLanes], rs[kWindowLanes], r[kWindowLanes],
+      rr[kWindowLanes], n[kWindowLanes];
+  _mm256_store_ps(s, sum_s);
+  _mm256_store_ps(ss, sum_ss);
+  _mm256_store_ps(rs, sum_rs);
+  _mm256_store_ps(r, sum_r);
+  _mm256_store_ps(rr, sum_rr);
+  _mm256_store_ps(n, count);
+  for (int l = 0; l < kWindowLanes; ++l) {
+    const bool partial = !((whole_lanes >> l) & 1u);
+    // WindowNccCost's rules: the centre must map into the source when the
+    // window is clipped or loses samples.
+    if (!((lanes >> l) & 1u) ||
+        ((w.clipped || partial) && !CentreInSource(H[l], src, w.col, w.row))) {
+      costs[l] = kMaxCost;
+    } else if (partial) {
+      const PartialSums sums{static_cast<int>(n[l]), r[l], rr[l], s[l], ss[l], rs[l]};
+      costs[l] = NccFromPartialSums(sums, w.num_samples, w.spread);
+    }
+  }
+}
+#endif
+
+MSP_HD void WindowNccCosts(const RefWindow& w, const ImageView& ref, const ImageView& src,
+                           const Mat3* H, uint32_t lanes, const NccParams& p, float* costs) {
+#if defined(MSP_WINDOW_SUMS_AVX2)
+  WindowNccCostsAvx2(w, ref, src, H, lanes, p, costs);
+#else
+  WindowNccCostsScalar(w, ref, src, H, lanes, p, costs);
+#endif
+}
+
+}  // namespace core
+}  // namespace msp

@@ -29,6 +29,7 @@
 #include "core/vec.h"
 #include "core/view_selection.h"
 #include "core/warped_sample.h"
+#include "core/window_batch.h"
 #include "core/window_cost.h"
 #include "cuda/core_check.h"
 

@@ -174,6 +174,7 @@ class CostCurveSampler {
     if (!(focal_baseline_ > 0.0f)) return false;
     MaskWeights(p, mask, weights_);
     PrepareWindow(p, col, row, &window_);
+    for (int k = 0; k <= 2 * half_width; ++k) known_[k] = false;
     return true;
   }
   // The plane of sample k (0..2 half_width): the pixel's, at offset k - half_width.
@@ -184,22 +185,64 @@ class CostCurveSampler {
                                      static_cast<float>(k - half_width_));
     return h;
   }
-  MSP_HD float At(int k) const {
-    const PlaneHypothesis h = Plane(k);
-    if (!DepthInRange(*p_, h.depth)) return kMaxCost;
-    float costs[kMaxSourceViews];
-    PhotometricViewCosts(*p_, window_, h, weights_, costs);
-    return AggregateCost(costs, weights_, p_->num_src);
+  // The view-weighted photometric cost of sample k (AggregateCost of
+  // PhotometricViewCosts), kMaxCost for a depth out of range.
+  MSP_HD float At(int k) {
+    if (!known_[k]) ScoreBlock(k);
+    return cost_[k];
   }
   MSP_HD const float* weights() const { return weights_; }
 
  private:
+  // Scores the block of kWindowLanes samples that holds sample k, blocks
+  // counted from the centre, all at once per view (WindowNccCosts):
+  // consecutive disparities land about a pixel apart in the source, so the
+  // lanes read the same cache lines. Views of weight 0 add nothing to the
+  // aggregate and are skipped.
+  MSP_HD void ScoreBlock(int k) {
+    const int offset = k - half_width_;
+    const int block =
+        offset >= 0 ? offset / kWindowLanes : -((kWindowLanes - 1 - offset) / kWindowLanes);
+    const int first =
+        half_width_ + block * kWindowLanes < 0 ? 0 : half_width_ + block * kWindowLanes;
+    const int end = half_width_ + (block + 1) * kWindowLanes;
+    const int count = (end > 2 * half_width_ + 1 ? 2 * half_width_ + 1 : end) - first;
+    PlaneHypothesis h[kWindowLanes];
+    bool in_range[kWindowLanes];
+    for (int l = 0; l < count; ++l) {
+      h[l] = Plane(first + l);
+      in_range[l] = DepthInRange(*p_, h[l].depth);
+    }
+    PreparedPlane planes[kWindowLanes];
+    uint32_t lanes = 0u;
+    for (int l = 0; l < count; ++l) {
+      if (!in_range[l]) continue;
+      planes[l] = PreparePlane(*p_, window_.col, window_.row, h[l]);
+      if (planes[l].valid) lanes |= 1u << l;
+    }
+    float sum[kWindowLanes] = {}, total_weight = 0.0f;
+    for (int j = 0; j < p_->num_src; ++j) {
+      if (!(weights_[j] > 0.0f)) continue;
+      Mat3 H[kWindowLanes];
+      float ncc[kWindowLanes];
+      CandidateWindowCosts(*p_, window_, j, planes, lanes, count, H, ncc);
+      for (int l = 0; l < count; ++l) sum[l] += weights_[j] * ncc[l];
+      total_weight += weights_[j];
+    }
+    for (int l = 0; l < count; ++l) {
+      cost_[first + l] = in_range[l] && total_weight > 0.0f ? sum[l] / total_weight : kMaxCost;
+      known_[first + l] = true;
+    }
+  }
+
   const PassParams* p_ = nullptr;
   int half_width_ = kCurveHalfWidth;
   PlaneHypothesis current_;
   float focal_baseline_ = 0.0f;
   float weights_[kMaxSourceViews];
   RefWindow window_;
+  float cost_[kMaxSweepSamples];
+  bool known_[kMaxSweepSamples];
 };
 
 // Writes the whole curve (kCurveSamples costs); false when the pixel is unknown.

@@ -89,6 +89,34 @@ TEST(Reliability, TexturedPlaneAtItsTrueDepthIsReliable) {
   EXPECT_EQ(ClassifyPixel(s.params, 60, 50, DefaultReliabilityParams(3)), kReliable);
 }
 
+// The sampler scores its samples in blocks (one vector lane each): every
+// sample costs what the view-weighted cost of its plane alone gives.
+TEST(Reliability, BlockScoredCurveEqualsEachSampleAlone) {
+  testing_scene::PlaneScene s;
+  testing_scene::MakeScene(4.0f, true, &s);
+  for (const int col : {100, 60}) {
+    CostCurveSampler sampler;
+    ASSERT_TRUE(sampler.Prepare(s.params, col, 75));
+    RefWindow w;
+    PrepareWindow(s.params, col, 75, &w);
+    int in_range = 0;
+    // Out of order, so that blocks are filled from either end.
+    for (int i = 0; i < kCurveSamples; ++i) {
+      const int k = (i * 37) % kCurveSamples;
+      const PlaneHypothesis h = sampler.Plane(k);
+      float alone = kMaxCost;
+      if (DepthInRange(s.params, h.depth)) {
+        float costs[kMaxSourceViews];
+        PhotometricViewCosts(s.params, w, h, sampler.weights(), costs);
+        alone = AggregateCost(costs, sampler.weights(), s.params.num_src);
+        ++in_range;
+      }
+      EXPECT_NEAR(sampler.At(k), alone, 2e-4f) << col << " sample " << k;
+    }
+    EXPECT_GT(in_range, 20);
+  }
+}
+
 TEST(Reliability, TexturelessPlaneIsUnreliable) {
   testing_scene::PlaneScene s;
   testing_scene::MakeScene(4.0f, false, &s);
@@ -169,8 +197,9 @@ TEST(Reliability, LazyClassificationStopsEarlyOnFlatOrDistantMinima) {
   const std::vector<float> flat(kCurveSamples, 0.9f);
   EXPECT_EQ(ClassifyLazily(flat, DefaultReliabilityParams(2), &calls), kUnreliable);
   EXPECT_LE(calls, 2 * 2 + 3);  // at most the central range and a sample either side
-  EXPECT_EQ(ClassifyLazily(VCurve(kCentre + 20, 0.05f, kSlope), DefaultReliabilityParams(0), &calls),
-            kUnreliable);
+  EXPECT_EQ(
+      ClassifyLazily(VCurve(kCentre + 20, 0.05f, kSlope), DefaultReliabilityParams(0), &calls),
+      kUnreliable);
   EXPECT_LE(calls, 2 * 6 + 3);
   // A reliable pixel needs the whole curve to rule out competitors.
   EXPECT_EQ(ClassifyLazily(VCurve(kCentre, 0.05f, kSlope), DefaultReliabilityParams(0), &calls),

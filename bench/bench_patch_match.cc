@@ -1,7 +1,7 @@
 // Throughput of the CPU back-end's building blocks, for ratios between
 // versions and thread counts: NCC cost evaluations per second on one core,
-// the deformable cost against the conventional one, and whole red-black
-// iterations (pixels per second) on 1 and N threads.
+// one plane at a time and eight at once, the deformable cost against the conventional one, and
+// whole red-black iterations (pixels per second) on 1 and N threads.
 //
 //   msp_bench_patch_match [width height num_views [ncc]]
 #include <time.h>
@@ -98,6 +98,52 @@ void BenchGeometricTerm(const core::PassParams& p, int width, int height) {
               seconds[0] / seconds[1], sink > 0 ? 1.0 : 0.0);
 }
 
+// Eight planes per window and view, as propagation scores its candidates:
+// one WindowNccCost per plane against WindowNccCosts with the planes in the
+// lanes of one vector. The planes are a little apart in depth, so the lanes'
+// samples land close together in the source; in a real sweep candidates
+// spread further, and the gain there is smaller (BENCHMARKS.md).
+void BenchCandidateBatch(const core::PassParams& p, int width, int height) {
+  const int r0 = p.ncc.window_radius;
+  double seconds[2] = {0.0, 0.0};
+  double sink = 0.0;
+  long evaluations = 0;
+  for (int batch = 0; batch < 2; ++batch) {
+    const double t0 = ThreadCpuSeconds();
+    for (int r = r0; r < height - r0; ++r) {
+      for (int c = r0; c < width - r0; ++c) {
+        core::RefWindow w;
+        core::PrepareWindow(p, c, r, &w);
+        for (int j = 0; j < p.num_src; ++j) {
+          core::Mat3 H[core::kWindowLanes];
+          for (int k = 0; k < core::kWindowLanes; ++k) {
+            const core::PlaneHypothesis h{2.0f * (1.0f + 0.002f * k),
+                                          core::Vec3{0.0f, 0.0f, -1.0f}};
+            H[k] = core::ComputeHomography(p.ref_camera, p.src[j].rel, h.normal,
+                                           core::PlaneDistance(p.ref_camera, c, r, h));
+          }
+          float costs[core::kWindowLanes];
+          if (batch) {
+            core::WindowNccCosts(w, p.ref_image, p.src[j].image, H, 0xffu, p.ncc, costs);
+          } else {
+            for (int k = 0; k < core::kWindowLanes; ++k) {
+              costs[k] = core::WindowNccCost(w, p.ref_image, p.src[j].image, H[k], p.ncc);
+            }
+          }
+          for (int k = 0; k < core::kWindowLanes; ++k) sink += costs[k];
+          evaluations += batch ? core::kWindowLanes : 0;
+        }
+      }
+    }
+    seconds[batch] = ThreadCpuSeconds() - t0;
+  }
+  std::printf(
+      "ncc 8 planes per window (homographies included): one at a time %.1f ns/evaluation, all at "
+      "once (WindowNccCosts) %.1f ns/evaluation, %.2fx [%g]\n",
+      1e9 * seconds[0] / evaluations, 1e9 * seconds[1] / evaluations, seconds[0] / seconds[1],
+      sink > 0 ? 1.0 : 0.0);
+}
+
 // The deformable cost (centre window + 8 anchor windows, paper eq. 3) against
 // the conventional one on the same pixels and views, one core: the ratio is
 // what a deformable update pays per view and candidate.
@@ -180,6 +226,7 @@ void Run(int width, int height, int num_views, bool ncc_only) {
   std::printf("ncc fast / general: %.2fx (vector path: %s)\n", rate[1] / rate[0],
               kVectorPath ? "AVX2" : "off");
 
+  BenchCandidateBatch(p, width, height);
   BenchDeformableCost(p, width, height);
   BenchGeometricTerm(p, width, height);
   if (ncc_only) return;

@@ -125,26 +125,18 @@ inline void AnchorSumsAvx2(const AnchorWindows& w, const ImageView& src, const M
   const __m256i lane_bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
   __m256 ok = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
       _mm256_and_si256(_mm256_set1_epi32(static_cast<int>(w.fast)), lane_bit), lane_bit));
-  const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
-  __m256 sum_s = zero, sum_ss = zero, sum_rs = zero, sum_r = zero, sum_rr = zero, count = zero;
+  MaskedSumLanes sums = ZeroMaskedSums();
   for (int k = 0; k < w.num_samples; ++k) {
     const WarpedCells cells = WarpCells(lanes, _mm256_loadu_ps(w.x[k]), _mm256_loadu_ps(w.y[k]));
     ok = _mm256_and_ps(ok, cells.inside);
-    const __m256 s = _mm256_and_ps(LoadBilinear(src, cells), cells.inside);
-    const __m256 r = _mm256_and_ps(_mm256_loadu_ps(w.value[k]), cells.inside);
-    sum_s = _mm256_add_ps(sum_s, s);
-    sum_ss = _mm256_fmadd_ps(s, s, sum_ss);
-    sum_rs = _mm256_fmadd_ps(r, s, sum_rs);
-    sum_r = _mm256_add_ps(sum_r, r);
-    sum_rr = _mm256_fmadd_ps(r, r, sum_rr);
-    count = _mm256_add_ps(count, _mm256_and_ps(one, cells.inside));
+    AddMaskedSample(LoadBilinear(src, cells), _mm256_loadu_ps(w.value[k]), cells.inside, &sums);
   }
-  _mm256_storeu_ps(out->s, sum_s);
-  _mm256_storeu_ps(out->ss, sum_ss);
-  _mm256_storeu_ps(out->rs, sum_rs);
-  _mm256_storeu_ps(out->r, sum_r);
-  _mm256_storeu_ps(out->rr, sum_rr);
-  _mm256_storeu_ps(out->count, count);
+  _mm256_storeu_ps(out->s, sums.s);
+  _mm256_storeu_ps(out->ss, sums.ss);
+  _mm256_storeu_ps(out->rs, sums.rs);
+  _mm256_storeu_ps(out->r, sums.r);
+  _mm256_storeu_ps(out->rr, sums.rr);
+  _mm256_storeu_ps(out->count, sums.count);
   out->inside = static_cast<uint32_t>(_mm256_movemask_ps(ok));
 }
 #endif

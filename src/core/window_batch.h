@@ -49,24 +49,15 @@ inline void WindowNccCostsAvx2(const RefWindow& w, const ImageView& ref, const I
   warp.max_u = _mm256_set1_ps(src.width - 1.0f);
   warp.max_v = _mm256_set1_ps(src.height - 1.0f);
   warp.pitch = _mm256_set1_epi32(src.pitch);
-  // Samples that leave the source read pixel 0 and are masked out of every
-  // sum; the reference sums and the count serve the lanes that lose some.
-  const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
-  __m256 sum_s = zero, sum_ss = zero, sum_rs = zero, sum_r = zero, sum_rr = zero, count = zero;
+  // The reference sums and the count serve the lanes that lose samples.
+  MaskedSumLanes sums = ZeroMaskedSums();
   __m256 whole = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
   for (int k = 0; k < w.num_samples; ++k) {
     const WarpedCells cells = WarpCells(warp, _mm256_set1_ps(w.x[k]), _mm256_set1_ps(w.y[k]));
     whole = _mm256_and_ps(whole, cells.inside);
-    const __m256 s = _mm256_and_ps(LoadBilinear(src, cells), cells.inside);
-    const __m256 r = _mm256_and_ps(_mm256_set1_ps(w.value[k]), cells.inside);
-    sum_s = _mm256_add_ps(sum_s, s);
-    sum_ss = _mm256_fmadd_ps(s, s, sum_ss);
-    sum_rs = _mm256_fmadd_ps(r, s, sum_rs);
-    sum_r = _mm256_add_ps(sum_r, r);
-    sum_rr = _mm256_fmadd_ps(r, r, sum_rr);
-    count = _mm256_add_ps(count, _mm256_and_ps(one, cells.inside));
+    AddMaskedSample(LoadBilinear(src, cells), _mm256_set1_ps(w.value[k]), cells.inside, &sums);
   }
-  const __m256 cost = w.textured ? NccFromSourceSumLanes(sum_s, sum_ss, sum_rs, w.num_samples)
+  const __m256 cost = w.textured ? NccFromSourceSumLanes(sums.s, sums.ss, sums.rs, w.num_samples)
                                  : _mm256_set1_ps(kMaxCost);
   _mm256_storeu_ps(costs, cost);
   const uint32_t whole_lanes = static_cast<uint32_t>(_mm256_movemask_ps(whole));
@@ -78,12 +69,12 @@ inline void WindowNccCostsAvx2(const RefWindow& w, const ImageView& ref, const I
   }
   alignas(32) float s[kWindowLanes], ss[kWindowLanes], rs[kWindowLanes], r[kWindowLanes],
       rr[kWindowLanes], n[kWindowLanes];
-  _mm256_store_ps(s, sum_s);
-  _mm256_store_ps(ss, sum_ss);
-  _mm256_store_ps(rs, sum_rs);
-  _mm256_store_ps(r, sum_r);
-  _mm256_store_ps(rr, sum_rr);
-  _mm256_store_ps(n, count);
+  _mm256_store_ps(s, sums.s);
+  _mm256_store_ps(ss, sums.ss);
+  _mm256_store_ps(rs, sums.rs);
+  _mm256_store_ps(r, sums.r);
+  _mm256_store_ps(rr, sums.rr);
+  _mm256_store_ps(n, sums.count);
   for (int l = 0; l < kWindowLanes; ++l) {
     const bool partial = !((whole_lanes >> l) & 1u);
     // WindowNccCost's rules: the centre must map into the source when the

@@ -70,6 +70,31 @@ inline PartialSums PartialSumsAvx2(const RefWindow& w, const ImageView& src, con
 }
 #endif
 
+#if defined(MSP_WINDOW_SUMS_AVX2)
+// Per-lane sums over the samples whose bilinear support lies in the source,
+// for vectors whose lanes are separate windows: a lane whose sample leaves
+// the source (`inside` clear) reads pixel 0 instead and adds nothing.
+struct MaskedSumLanes {
+  __m256 s, ss, rs, r, rr, count;  // r: normalised reference value
+};
+
+inline MaskedSumLanes ZeroMaskedSums() {
+  const __m256 zero = _mm256_setzero_ps();
+  return MaskedSumLanes{zero, zero, zero, zero, zero, zero};
+}
+
+inline void AddMaskedSample(__m256 source, __m256 reference, __m256 inside, MaskedSumLanes* a) {
+  const __m256 s = _mm256_and_ps(source, inside);
+  const __m256 r = _mm256_and_ps(reference, inside);
+  a->s = _mm256_add_ps(a->s, s);
+  a->ss = _mm256_fmadd_ps(s, s, a->ss);
+  a->rs = _mm256_fmadd_ps(r, s, a->rs);
+  a->r = _mm256_add_ps(a->r, r);
+  a->rr = _mm256_fmadd_ps(r, r, a->rr);
+  a->count = _mm256_add_ps(a->count, _mm256_and_ps(_mm256_set1_ps(1.0f), inside));
+}
+#endif
+
 MSP_HD PartialSums PartialWindowSums(const RefWindow& w, const ImageView& src, const Mat3& H) {
 #if defined(MSP_WINDOW_SUMS_AVX2)
   return PartialSumsAvx2(w, src, H);

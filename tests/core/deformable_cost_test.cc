@@ -23,6 +23,13 @@ AnchorSet AnchorsAt(const int (*offsets)[2], int count, int col, int row) {
   return a;
 }
 
+// One anchor per sector, 20 px from p.
+AnchorSet RingOfAnchors() {
+  const int ring[kMaxAnchors][2] = {{20, 0},  {14, 14},   {0, 20},  {-14, 14},
+                                    {-20, 0}, {-14, -14}, {0, -20}, {14, -14}};
+  return AnchorsAt(ring, kMaxAnchors, kCol, kRow);
+}
+
 // Anchor windows sum their samples in another order than the centre window
 // (or take the general form), so equal windows agree to float rounding.
 constexpr float kRounding = 1e-5f;
@@ -77,9 +84,7 @@ TEST(DeformableCost, GeometricTermAsInTheConventionalCost) {
 TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
   testing_scene::PlaneScene s;
   testing_scene::MakeScene(4.0f, true, &s);
-  const int ring[kMaxAnchors][2] = {{20, 0},  {14, 14},   {0, 20},  {-14, 14},
-                                    {-20, 0}, {-14, -14}, {0, -20}, {14, -14}};
-  const AnchorSet a = AnchorsAt(ring, kMaxAnchors, kCol, kRow);
+  const AnchorSet a = RingOfAnchors();
   const DeformableParams d = DefaultDeformableParams();
   const PlaneHypothesis truth{4.0f, kFrontoParallel};
   const PlaneHypothesis wrong{4.4f, kFrontoParallel};
@@ -106,9 +111,7 @@ TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
 TEST(DeformableCost, CandidateRowsCostWhatEachCandidateCostsAlone) {
   testing_scene::PlaneScene s;
   testing_scene::MakeScene(4.0f, true, &s);
-  const int ring[kMaxAnchors][2] = {{20, 0},  {14, 14},   {0, 20},  {-14, 14},
-                                    {-20, 0}, {-14, -14}, {0, -20}, {14, -14}};
-  const AnchorSet a = AnchorsAt(ring, kMaxAnchors, kCol, kRow);
+  const AnchorSet a = RingOfAnchors();
   const DeformableParams d = DefaultDeformableParams();
   DeformableWindows windows;
   PrepareDeformableWindows(s.params, kCol, kRow, a, d, &windows);
@@ -151,9 +154,7 @@ TEST(DeformableCost, TexturedAnchorsRescueATexturelessCentre) {
       }
     }
   }
-  const int ring[kMaxAnchors][2] = {{20, 0},  {14, 14},   {0, 20},  {-14, 14},
-                                    {-20, 0}, {-14, -14}, {0, -20}, {14, -14}};
-  const AnchorSet a = AnchorsAt(ring, kMaxAnchors, kCol, kRow);
+  const AnchorSet a = RingOfAnchors();
   const PlaneHypothesis truth{4.0f, kFrontoParallel};
   const PlaneHypothesis wrong{4.4f, kFrontoParallel};
   EXPECT_EQ(ViewCost(s.params, 0, kCol, kRow, truth), kMaxCost);

@@ -9,6 +9,7 @@
 //   depth x 1.05: per-map within-1 % 0 %; F1 (>= 3 views) 1.1 % (0.5 %),
 //                 41.5 % (2 %); accuracy 1.4 % / 34 %.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -58,8 +59,10 @@ eval::EvaluationResult Evaluate(const std::string& ws, const std::string& fused)
 
 class ContractTest : public testing::Test {
  protected:
+  static void TearDownTestSuite() { fs::remove_all(workspace_); }
   static void SetUpTestSuite() {
-    workspace_ = testing::TempDir() + "/msp_contract_ws";
+    // One directory per process, so that two test runs on one machine do not collide.
+    workspace_ = testing::TempDir() + "/msp_contract_ws_" + std::to_string(getpid());
     fs::remove_all(workspace_);
     scene::GeneratorOptions options;
     options.output = workspace_;
@@ -67,7 +70,8 @@ class ContractTest : public testing::Test {
     scene::GenerateScene(options);
   }
   void SetUp() override {
-    ASSERT_TRUE(fs::exists(ColmapExecutable())) << "colmap is not installed at " << ColmapExecutable();
+    ASSERT_TRUE(fs::exists(ColmapExecutable()))
+        << "colmap is not installed at " << ColmapExecutable();
   }
   static std::string workspace_;
 };

@@ -9,6 +9,7 @@
 // 61.9 %, fused accuracy at 2 % of the extent 91.1 %, F1 over >= 3-view surface
 // 61.4 %. (Conventional core, --MspStereo.deformable false: 60.9 %, 96.9 %, 48.6 %.)
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -27,7 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // Tolerances, a little below what was measured, so a regression fails.
-constexpr double kMinMapAccuracy5 = 0.57;      // valid pixels within 5 % depth
+constexpr double kMinMapAccuracy5 = 0.57;         // valid pixels within 5 % depth
 constexpr double kMinFusedAccuracyCoarse = 0.87;  // fused points within 2 % of the extent
 constexpr double kMinF1MultiCoarse = 0.56;        // F1 over >= 3-view surface at 2 %
 constexpr int kNumViews = 6;
@@ -49,8 +50,10 @@ std::string ReadFile(const std::string& path) {
 
 class EndToEndTest : public testing::Test {
  protected:
+  static void TearDownTestSuite() { fs::remove_all(ws_); }
   static void SetUpTestSuite() {
-    ws_ = testing::TempDir() + "/msp_end_to_end_ws";
+    // One directory per process, so that two test runs on one machine do not collide.
+    ws_ = testing::TempDir() + "/msp_end_to_end_ws_" + std::to_string(getpid());
     fs::remove_all(ws_);
     scene::GeneratorOptions options;
     options.output = ws_;
@@ -69,15 +72,14 @@ const std::string kColmap = std::string(MSP_BIN_DIR) + "/colmap";
 TEST_F(EndToEndTest, StereoFusionEvaluateThenResume) {
   ASSERT_TRUE(fs::exists(RealColmap())) << "colmap is not installed at " << RealColmap();
   ASSERT_EQ(RunLogged(kColmap + " msp_stereo --workspace_path " + ws_ + " --MspStereo.seed 1",
-                ws_ + "/stereo.log"),
+                      ws_ + "/stereo.log"),
             0)
       << ReadFile(ws_ + "/stereo.log");
   for (int i = 0; i < kNumViews; ++i) {
     char name[32];
     std::snprintf(name, sizeof(name), "img_%03d.png", i);
     for (const char* type : {"photometric", "geometric"}) {
-      const DenseMap depth =
-          ReadDenseMap(ws_ + "/stereo/depth_maps/" + name + "." + type + ".bin");
+      const DenseMap depth = ReadDenseMap(ws_ + "/stereo/depth_maps/" + name + "." + type + ".bin");
       const DenseMap normal =
           ReadDenseMap(ws_ + "/stereo/normal_maps/" + name + "." + type + ".bin");
       ASSERT_EQ(depth.width, 320);
@@ -88,8 +90,8 @@ TEST_F(EndToEndTest, StereoFusionEvaluateThenResume) {
   }
   const std::string fused = ws_ + "/fused.ply";
   ASSERT_EQ(RunLogged(kColmap + " stereo_fusion --workspace_path " + ws_ +
-                    " --input_type geometric --output_path " + fused,
-                ws_ + "/fusion.log"),
+                          " --input_type geometric --output_path " + fused,
+                      ws_ + "/fusion.log"),
             0)
       << ReadFile(ws_ + "/fusion.log");
 

@@ -177,18 +177,26 @@ MSP_HD void ViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypoth
 
 static_assert(kNumPropagationCandidates <= kWindowLanes, "one vector lane per candidate");
 
-// Prepares up to kWindowLanes hypotheses h[k] whose `has` is set, and their
-// geometric terms in every view; returns the lanes whose plane is valid.
-MSP_HD uint32_t PrepareCandidates(const PassParams& p, const RefWindow& w, const PlaneHypothesis* h,
-                                  const bool* has, int num, PreparedPlane* planes,
-                                  float (*geometric)[kMaxSourceViews]) {
+// Prepares up to kWindowLanes hypotheses h[k] whose `has` is set; returns
+// the lanes whose plane is valid.
+MSP_HD uint32_t PreparePlanes(const PassParams& p, const RefWindow& w, const PlaneHypothesis* h,
+                              const bool* has, int num, PreparedPlane* planes) {
   uint32_t lanes = 0u;
   for (int k = 0; k < num; ++k) {
     if (!has[k]) continue;
     planes[k] = PreparePlane(p, w.col, w.row, h[k]);
-    if (!planes[k].valid) continue;
-    lanes |= 1u << k;
-    GeometricTerms(p, w.col, w.row, planes[k], nullptr, geometric[k]);
+    if (planes[k].valid) lanes |= 1u << k;
+  }
+  return lanes;
+}
+
+// PreparePlanes, and the geometric terms of the valid planes in every view.
+MSP_HD uint32_t PrepareCandidates(const PassParams& p, const RefWindow& w, const PlaneHypothesis* h,
+                                  const bool* has, int num, PreparedPlane* planes,
+                                  float (*geometric)[kMaxSourceViews]) {
+  const uint32_t lanes = PreparePlanes(p, w, h, has, num, planes);
+  for (int k = 0; k < num; ++k) {
+    if ((lanes >> k) & 1u) GeometricTerms(p, w.col, w.row, planes[k], nullptr, geometric[k]);
   }
   return lanes;
 }

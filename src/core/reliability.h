@@ -214,12 +214,7 @@ class CostCurveSampler {
       in_range[l] = DepthInRange(*p_, h[l].depth);
     }
     PreparedPlane planes[kWindowLanes];
-    uint32_t lanes = 0u;
-    for (int l = 0; l < count; ++l) {
-      if (!in_range[l]) continue;
-      planes[l] = PreparePlane(*p_, window_.col, window_.row, h[l]);
-      if (planes[l].valid) lanes |= 1u << l;
-    }
+    const uint32_t lanes = PreparePlanes(*p_, window_, h, in_range, count, planes);
     float sum[kWindowLanes] = {}, total_weight = 0.0f;
     for (int j = 0; j < p_->num_src; ++j) {
       if (!(weights_[j] > 0.0f)) continue;

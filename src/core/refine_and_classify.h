@@ -23,7 +23,7 @@ template <typename Sweep>
 struct SweepWindow {
   Sweep* sweep;
   int first;
-  MSP_HD float At(int k) { return sweep->At(first + k); }
+  MSP_HD float AtLeast(int k, float floor) { return sweep->AtLeast(first + k, floor); }
 };
 
 // The cost LocalRefinePixel gives sample k of the sweep: photometric plus,

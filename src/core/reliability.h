@@ -78,25 +78,41 @@ MSP_HD uint8_t ClassifyCostCurve(const float* curve, int n, const ReliabilityPar
   return second - curve[lowest] > params.min_spread ? kReliable : kUnreliable;
 }
 
+// A floor no cost reaches: AtLeast(i, kExactCost) is the exact cost.
+constexpr float kExactCost = 1e30f;
+// Lower bounds serve only this far above the costs a verdict compares.
+constexpr float kBoundMargin = 1e-3f;
+
 // ClassifyCostCurve over a curve whose samples are computed on demand (each
-// at most once) by `sampler.At(i)`. It decides with the same answer, but most
-// unreliable pixels need only the central samples: the pixel can only be
-// reliable when the lowest minimum within `radius` of the centre is low
-// enough, and the outer samples are then scanned only until a minimum there
-// beats it or comes within `min_spread` of it.
+// at most once) by `sampler.AtLeast(i, floor)`: the cost of sample i, or,
+// when that cost exceeds `floor`, possibly only a lower bound above `floor`.
+// It decides with the same answer, but most unreliable pixels need only the
+// central samples: the pixel can only be reliable when the lowest minimum
+// within `radius` of the centre is low enough, and the outer samples are
+// then scanned only until a minimum there beats it or comes within
+// `min_spread` of it. A reliable pixel needs the whole curve; of the outer
+// samples it needs only those that could compete (lower bounds above
+// best + min_spread rule out the others).
 template <typename Sampler>
 class LazyCostCurve {
  public:
   MSP_HD LazyCostCurve(Sampler* sampler, int n) : sampler_(sampler), n_(n) {
     for (int i = 0; i < n; ++i) known_[i] = false;
   }
-  MSP_HD float At(int i) {
-    if (!known_[i]) {
-      value_[i] = sampler_->At(i);
+  // The cost of sample i, or, once AllowBoundsAbove(floor) was called and
+  // the cost exceeds that floor, possibly a lower bound above it.
+  MSP_HD float At(int i) { return AtLeast(i, floor_); }
+  // The sampler's contract, so that a curve can serve as another's sampler.
+  MSP_HD float AtLeast(int i, float floor) {
+    if (!known_[i] || (!exact_[i] && !(value_[i] > floor))) {
+      value_[i] = sampler_->AtLeast(i, floor);
       known_[i] = true;
+      exact_[i] = floor >= kExactCost || !(value_[i] > floor);  // bounds lie above it
     }
     return value_[i];
   }
+  // From now on At() may return lower bounds for costs above `floor`.
+  MSP_HD void AllowBoundsAbove(float floor) { floor_ = floor; }
   // IsStrictLocalMinimum on the lazily sampled curve.
   MSP_HD bool IsMinimum(int i) {
     if (n_ < 2) return false;
@@ -108,8 +124,10 @@ class LazyCostCurve {
  private:
   Sampler* sampler_;
   int n_;
+  float floor_ = kExactCost;
   float value_[kMaxSweepSamples];
   bool known_[kMaxSweepSamples];
+  bool exact_[kMaxSweepSamples];
 };
 
 template <typename Sampler>
@@ -133,6 +151,16 @@ MSP_HD uint8_t ClassifyCostCurveLazily(LazyCostCurve<Sampler>& curve,
   for (int i = lo; i <= hi; ++i) {
     if (i != lowest && curve.IsMinimum(i) && curve.At(i) < second) second = curve.At(i);
   }
+  // Past here the verdict turns on two questions: does an outer minimum lie
+  // within min_spread of the best, and does any other minimum exist at all.
+  // Once the second is settled (a minimum other than the best was found
+  // exactly), or no longer matters (a single minimum this low is reliable
+  // too), samples above best + min_spread need no exact cost: a lower bound
+  // above that can neither be a competitor nor hide one next to it (a
+  // competitor lies below its neighbours either way). The margin keeps
+  // float rounding of the spread test below from flipping.
+  const float floor = best + params.min_spread + kBoundMargin;
+  if (best <= params.single_min_cost || num_minima >= 2) curve.AllowBoundsAbove(floor);
   // The outer samples nearest the centre first, alternating sides: a
   // competing minimum found anywhere ends the scan, and the verdict does not
   // depend on the order.
@@ -147,6 +175,7 @@ MSP_HD uint8_t ClassifyCostCurveLazily(LazyCostCurve<Sampler>& curve,
     if (v < best || (v == best && i < lowest)) return kUnreliable;
     if (v - best <= params.min_spread) return kUnreliable;  // second - best can only shrink
     if (v < second) second = v;
+    curve.AllowBoundsAbove(floor);  // another minimum exists
   }
   if (num_minima == 1) return best <= params.single_min_cost ? kReliable : kUnreliable;
   return second - best > params.min_spread ? kReliable : kUnreliable;
@@ -173,6 +202,10 @@ class CostCurveSampler {
     focal_baseline_ = p.ref_camera.fx * MeanBaseline(p, mask);
     if (!(focal_baseline_ > 0.0f)) return false;
     MaskWeights(p, mask, weights_);
+    total_weight_ = 0.0f;
+    for (int j = 0; j < p.num_src; ++j) {
+      if (weights_[j] > 0.0f) total_weight_ += weights_[j];
+    }
     PrepareWindow(p, col, row, &window_);
     for (int k = 0; k <= 2 * half_width; ++k) known_[k] = false;
     return true;
@@ -186,11 +219,13 @@ class CostCurveSampler {
     return h;
   }
   // The view-weighted photometric cost of sample k (AggregateCost of
-  // PhotometricViewCosts), kMaxCost for a depth out of range.
-  MSP_HD float At(int k) {
-    if (!known_[k]) ScoreBlock(k);
+  // PhotometricViewCosts), kMaxCost for a depth out of range; or, when it
+  // exceeds `floor`, possibly a lower bound above `floor` (ScoreBlock).
+  MSP_HD float AtLeast(int k, float floor) {
+    if (!known_[k] || (!exact_[k] && !(cost_[k] > floor))) ScoreBlock(k, floor);
     return cost_[k];
   }
+  MSP_HD float At(int k) { return AtLeast(k, kExactCost); }
   MSP_HD const float* weights() const { return weights_; }
 
  private:
@@ -198,8 +233,11 @@ class CostCurveSampler {
   // counted from the centre, all at once per view (WindowNccCosts):
   // consecutive disparities land about a pixel apart in the source, so the
   // lanes read the same cache lines. Views of weight 0 add nothing to the
-  // aggregate and are skipped.
-  MSP_HD void ScoreBlock(int k) {
+  // aggregate and are skipped. The costs are weighted means of costs >= 0,
+  // so the views summed so far bound every lane from below: once every lane
+  // is above `floor`, the other views are left out and the lanes keep their
+  // bounds.
+  MSP_HD void ScoreBlock(int k, float floor) {
     const int offset = k - half_width_;
     const int block =
         offset >= 0 ? offset / kWindowLanes : -((kWindowLanes - 1 - offset) / kWindowLanes);
@@ -215,18 +253,27 @@ class CostCurveSampler {
     }
     PreparedPlane planes[kWindowLanes];
     const uint32_t lanes = PreparePlanes(*p_, window_, h, in_range, count, planes);
-    float sum[kWindowLanes] = {}, total_weight = 0.0f;
-    for (int j = 0; j < p_->num_src; ++j) {
+    float sum[kWindowLanes] = {};
+    bool exact = true;
+    for (int j = 0; j < p_->num_src && total_weight_ > 0.0f; ++j) {
       if (!(weights_[j] > 0.0f)) continue;
       Mat3 H[kWindowLanes];
       float ncc[kWindowLanes];
       CandidateWindowCosts(*p_, window_, j, planes, lanes, count, H, ncc);
-      for (int l = 0; l < count; ++l) sum[l] += weights_[j] * ncc[l];
-      total_weight += weights_[j];
+      bool above = floor < kExactCost;
+      for (int l = 0; l < count; ++l) {
+        sum[l] += weights_[j] * ncc[l];
+        above = above && (!in_range[l] || sum[l] / total_weight_ > floor);
+      }
+      if (above) {
+        exact = false;
+        break;
+      }
     }
     for (int l = 0; l < count; ++l) {
-      cost_[first + l] = in_range[l] && total_weight > 0.0f ? sum[l] / total_weight : kMaxCost;
+      cost_[first + l] = in_range[l] && total_weight_ > 0.0f ? sum[l] / total_weight_ : kMaxCost;
       known_[first + l] = true;
+      exact_[first + l] = exact || !in_range[l];
     }
   }
 
@@ -235,9 +282,11 @@ class CostCurveSampler {
   PlaneHypothesis current_;
   float focal_baseline_ = 0.0f;
   float weights_[kMaxSourceViews];
+  float total_weight_ = 0.0f;
   RefWindow window_;
   float cost_[kMaxSweepSamples];
   bool known_[kMaxSweepSamples];
+  bool exact_[kMaxSweepSamples];
 };
 
 // Writes the whole curve (kCurveSamples costs); false when the pixel is unknown.

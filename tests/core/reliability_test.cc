@@ -145,21 +145,31 @@ namespace msp {
 namespace core {
 namespace {
 
-// Serves a stored curve and counts the samples asked for.
+// Serves a stored curve and counts the samples asked for. With `bounding`
+// set, a cost above the floor asked for comes back as an arbitrary lower
+// bound above that floor, as the real sampler may give it.
 struct CountingSampler {
   const std::vector<float>* curve;
+  uint64_t bounding = 0;
   int calls = 0;
-  float At(int i) {
+  int bounds = 0;
+  float AtLeast(int i, float floor) {
     ++calls;
-    return (*curve)[i];
+    const float cost = (*curve)[i];
+    if (bounding == 0 || !(cost > floor)) return cost;
+    ++bounds;
+    const float bound = floor + (cost - floor) * RandomUniform(Mix64(bounding), i);
+    return bound > floor ? bound : cost;
   }
 };
 
-uint8_t ClassifyLazily(const std::vector<float>& c, const ReliabilityParams& params, int* calls) {
-  CountingSampler sampler{&c};
+uint8_t ClassifyLazily(const std::vector<float>& c, const ReliabilityParams& params, int* calls,
+                       uint64_t bounding = 0, int* bounds = nullptr) {
+  CountingSampler sampler{&c, bounding};
   LazyCostCurve<CountingSampler> curve(&sampler, static_cast<int>(c.size()));
   const uint8_t result = ClassifyCostCurveLazily(curve, params);
   *calls = sampler.calls;
+  if (bounds != nullptr) *bounds = sampler.bounds;
   return result;
 }
 
@@ -167,7 +177,7 @@ TEST(Reliability, LazyClassificationAgreesWithTheWholeCurve) {
   // Random curves of coarse values (so ties and plateaus happen); every other
   // one lies higher with a deep minimum planted near the centre, under every
   // pass's radius.
-  int reliable = 0, unreliable = 0;
+  int reliable = 0, unreliable = 0, bounded = 0;
   for (uint64_t trial = 0; trial < 4000; ++trial) {
     std::vector<float> c(kCurveSamples);
     const bool planted = trial % 2 == 0;
@@ -186,10 +196,35 @@ TEST(Reliability, LazyClassificationAgreesWithTheWholeCurve) {
       ASSERT_LE(calls, kCurveSamples);
       reliable += lazy == kReliable;
       unreliable += lazy == kUnreliable;
+      // Lower bounds in place of the costs the verdict does not need.
+      int bounds = 0;
+      ASSERT_EQ(ClassifyLazily(c, params, &calls, trial + 1, &bounds), lazy)
+          << trial << " " << pass;
+      ASSERT_LE(calls, kCurveSamples);
+      bounded += bounds;
     }
   }
   EXPECT_GT(reliable, 100);  // both outcomes were exercised
   EXPECT_GT(unreliable, 100);
+  EXPECT_GT(bounded, 1000);  // and bounds stood in for many costs
+}
+
+TEST(Reliability, LowerBoundsStandInOnlyWhereTheVerdictAllows) {
+  int calls = 0, bounds = 0;
+  for (uint64_t seed = 1; seed <= 50; ++seed) {
+    // A single minimum low enough to be reliable alone: the samples away
+    // from it may come back as bounds.
+    EXPECT_EQ(ClassifyLazily(VCurve(kCentre, 0.1f, kSlope), DefaultReliabilityParams(0), &calls,
+                             seed, &bounds),
+              kReliable);
+    EXPECT_GT(bounds, 0);
+    // A single minimum too high for that: whether another minimum exists
+    // decides, so bounds, which could fake one, must not be used.
+    EXPECT_EQ(ClassifyLazily(VCurve(kCentre, 0.3f, kSlope), DefaultReliabilityParams(0), &calls,
+                             seed, &bounds),
+              kUnreliable);
+    EXPECT_EQ(bounds, 0);
+  }
 }
 
 TEST(Reliability, LazyClassificationStopsEarlyOnFlatOrDistantMinima) {

@@ -47,17 +47,14 @@ MSP_HD void LocalRefinePixel(const PassParams& p, int col, int row) {
   if (!(fb > 0.0f)) return;
   RefWindow w;
   PrepareWindow(p, col, row, &w);
-  float costs[kMaxSourceViews];
-  ViewCosts(p, w, cur, weights, costs);
-  float best_cost = AggregateCost(costs, weights, p.num_src);
+  float best_cost = AggregateViewCostBelow(p, w, cur, weights, kUnboundedCost);
   PlaneHypothesis best = cur;
   for (int delta = -kLocalRefineRadius; delta <= kLocalRefineRadius; ++delta) {
     if (delta == 0) continue;
     PlaneHypothesis h = cur;
     h.depth = DepthAtDisparityOffset(fb, cur.depth, static_cast<float>(delta));
     if (!DepthInRange(p, h.depth)) continue;
-    ViewCosts(p, w, h, weights, costs);
-    const float c = AggregateCost(costs, weights, p.num_src);
+    const float c = AggregateViewCostBelow(p, w, h, weights, best_cost);
     if (c < best_cost) {
       best_cost = c;
       best = h;

@@ -175,6 +175,38 @@ MSP_HD void ViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypoth
   }
 }
 
+// Sum of the weights, in AggregateCost's order.
+MSP_HD float TotalWeight(const float* weights, int num_views) {
+  float w = 0.0f;
+  for (int j = 0; j < num_views; ++j) w += weights[j];
+  return w;
+}
+
+// A limit no cost reaches: the bounded costs below are then exact.
+constexpr float kUnboundedCost = 1e30f;
+
+// AggregateCost of ViewCosts(h), or, as soon as the views scored so far put
+// it at or above `limit`, that partial figure instead: every view cost is
+// >= 0, so the partial sums only grow, and a candidate that cannot beat
+// `limit` is known to lose before all its views are scored. (The sums run
+// in AggregateCost's order but may round differently from it: compare its
+// results with each other.)
+MSP_HD float AggregateViewCostBelow(const PassParams& p, const RefWindow& w,
+                                    const PlaneHypothesis& h, const float* weights, float limit) {
+  const float total_weight = TotalWeight(weights, p.num_src);
+  const PreparedPlane plane = PreparePlane(p, w.col, w.row, h);
+  if (!plane.valid || !(total_weight > 0.0f)) return kMaxCost;
+  float geometric[kMaxSourceViews];
+  GeometricTerms(p, w.col, w.row, plane, weights, geometric);
+  float sum = 0.0f;
+  for (int j = 0; j < p.num_src; ++j) {
+    if (!IsWeighted(weights, j)) continue;  // adds weight 0 x kMaxCost = 0
+    sum += weights[j] * (PhotometricViewCost(p, w, j, plane) + geometric[j]);
+    if (sum / total_weight >= limit) break;
+  }
+  return sum / total_weight;
+}
+
 static_assert(kNumPropagationCandidates <= kWindowLanes, "one vector lane per candidate");
 
 // Prepares up to kWindowLanes hypotheses h[k] whose `has` is set; returns

@@ -78,8 +78,6 @@ MSP_HD uint8_t ClassifyCostCurve(const float* curve, int n, const ReliabilityPar
   return second - curve[lowest] > params.min_spread ? kReliable : kUnreliable;
 }
 
-// A floor no cost reaches: AtLeast(i, kExactCost) is the exact cost.
-constexpr float kExactCost = 1e30f;
 // Lower bounds serve only this far above the costs a verdict compares.
 constexpr float kBoundMargin = 1e-3f;
 
@@ -107,7 +105,7 @@ class LazyCostCurve {
     if (!known_[i] || (!exact_[i] && !(value_[i] > floor))) {
       value_[i] = sampler_->AtLeast(i, floor);
       known_[i] = true;
-      exact_[i] = floor >= kExactCost || !(value_[i] > floor);  // bounds lie above it
+      exact_[i] = floor >= kUnboundedCost || !(value_[i] > floor);  // bounds lie above it
     }
     return value_[i];
   }
@@ -124,7 +122,7 @@ class LazyCostCurve {
  private:
   Sampler* sampler_;
   int n_;
-  float floor_ = kExactCost;
+  float floor_ = kUnboundedCost;
   float value_[kMaxSweepSamples];
   bool known_[kMaxSweepSamples];
   bool exact_[kMaxSweepSamples];
@@ -225,7 +223,7 @@ class CostCurveSampler {
     if (!known_[k] || (!exact_[k] && !(cost_[k] > floor))) ScoreBlock(k, floor);
     return cost_[k];
   }
-  MSP_HD float At(int k) { return AtLeast(k, kExactCost); }
+  MSP_HD float At(int k) { return AtLeast(k, kUnboundedCost); }
   MSP_HD const float* weights() const { return weights_; }
 
  private:
@@ -260,7 +258,7 @@ class CostCurveSampler {
       Mat3 H[kWindowLanes];
       float ncc[kWindowLanes];
       CandidateWindowCosts(*p_, window_, j, planes, lanes, count, H, ncc);
-      bool above = floor < kExactCost;
+      bool above = floor < kUnboundedCost;
       for (int l = 0; l < count; ++l) {
         sum[l] += weights_[j] * ncc[l];
         above = above && (!in_range[l] || sum[l] / total_weight_ > floor);

@@ -80,6 +80,38 @@ TEST(RefineAndClassify, GeometricMatchesTheSeparateSteps) {
   EXPECT_GT(moved, 100);
 }
 
+// The local refinement's candidate costs (AggregateViewCostBelow): exact
+// without a limit, and under a limit either exact or a partial figure
+// between the limit and the exact cost.
+TEST(RefineAndClassify, BoundedCostStopsOnlyAtItsLimit) {
+  testing_scene::PlaneScene s;
+  testing_scene::MakeScene(4.0f, true, &s);
+  s.params.src[1] = s.params.src[0];  // two views, so that a sum can stop half way
+  s.params.num_src = 2;
+  const float weights[2] = {1.0f, 0.5f};
+  int stopped = 0;
+  for (int row = 10; row < s.ref.height - 10; row += 9) {
+    for (int col = 10; col < s.ref.width - 10; col += 7) {
+      RefWindow w;
+      PrepareWindow(s.params, col, row, &w);
+      for (float off : {1.0f, 1.03f, 1.09f}) {
+        const PlaneHypothesis h{s.depth * off, Vec3{0.0f, 0.0f, -1.0f}};
+        float costs[kMaxSourceViews];
+        ViewCosts(s.params, w, h, weights, costs);
+        const float exact = AggregateCost(costs, weights, 2);
+        ASSERT_NEAR(AggregateViewCostBelow(s.params, w, h, weights, kUnboundedCost), exact, 1e-6f);
+        ASSERT_NEAR(AggregateViewCostBelow(s.params, w, h, weights, exact + 0.01f), exact, 1e-6f);
+        const float limit = 0.6f * exact;
+        const float bounded = AggregateViewCostBelow(s.params, w, h, weights, limit);
+        ASSERT_GE(bounded, limit) << col << "," << row;
+        ASSERT_LE(bounded, exact + 1e-6f) << col << "," << row;
+        stopped += bounded < exact - 1e-6f;
+      }
+    }
+  }
+  EXPECT_GT(stopped, 100);  // the first view alone often sufficed
+}
+
 TEST(RefineAndClassify, UnknownPixelsAreRefinedAsUsual) {
   testing_scene::PlaneScene s;
   testing_scene::MakeScene(4.0f, true, &s);

@@ -200,10 +200,7 @@ class CostCurveSampler {
     focal_baseline_ = p.ref_camera.fx * MeanBaseline(p, mask);
     if (!(focal_baseline_ > 0.0f)) return false;
     MaskWeights(p, mask, weights_);
-    total_weight_ = 0.0f;
-    for (int j = 0; j < p.num_src; ++j) {
-      if (weights_[j] > 0.0f) total_weight_ += weights_[j];
-    }
+    total_weight_ = TotalWeight(weights_, p.num_src);
     PrepareWindow(p, col, row, &window_);
     for (int k = 0; k <= 2 * half_width; ++k) known_[k] = false;
     return true;

@@ -1,10 +1,12 @@
 #include "deformable_sweeps.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
 #include <utility>
 
+#include "anchor_pair_cache.h"
 #include "core/deformable_update.h"
 #include "core/refine_and_classify.h"
 #include "nearest_reliable.h"
@@ -107,8 +109,10 @@ DeformableStats RunDeformableCheckerboardIterations(
   const core::AnchorMaps anchor_maps{
       maps.classes.data(), maps.nearest.data(),  depth.data(), width, height,
       settings.edges,      settings.nearest_edge};
+  AnchorPairCachePool caches(params.num_src);
   DeformableStats stats;
   for (int iteration = 0; iteration < num_iterations; ++iteration) {
+    caches.ClearAll();
     depth.assign(s.depth, s.depth + n);
     normal.assign(s.normal, s.normal + 3 * n);
     std::atomic<long long> anchored{0};
@@ -144,16 +148,25 @@ DeformableStats RunDeformableCheckerboardIterations(
     }
     const auto sweep_start = std::chrono::steady_clock::now();
     for (int color = 0; color < 2; ++color) {
-      ParallelFor(0, height, num_threads, [&](int row) {
-        for (int col = (row + color) & 1; col < width; col += 2) {
-          const int k = slot[row * width + col];
-          if (k >= 0 && anchors[k].count > 0) {
-            core::DeformableUpdatePixel(params, col, row, iteration, anchors[k], planes,
-                                        settings.cost);
-          } else {
-            core::UpdatePixel(params, col, row, iteration);
+      // Tasks of a few rows each: a cache then serves consecutive rows, whose
+      // pixels share most of their anchors.
+      constexpr int kRowsPerTask = 8;
+      ParallelFor(0, (height + kRowsPerTask - 1) / kRowsPerTask, num_threads, [&](int task) {
+        AnchorPairCache* cache = caches.Acquire();
+        const CachedAnchorSums anchor_sums(params, planes, settings.cost, cache);
+        const int end = std::min(height, (task + 1) * kRowsPerTask);
+        for (int row = task * kRowsPerTask; row < end; ++row) {
+          for (int col = (row + color) & 1; col < width; col += 2) {
+            const int k = slot[row * width + col];
+            if (k >= 0 && anchors[k].count > 0) {
+              core::DeformableUpdatePixel(params, col, row, iteration, anchors[k], planes,
+                                          settings.cost, anchor_sums);
+            } else {
+              core::UpdatePixel(params, col, row, iteration);
+            }
           }
         }
+        caches.Release(cache);
       });
     }
     stats.sweep_seconds += SecondsSince(sweep_start);

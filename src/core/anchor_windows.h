@@ -9,6 +9,7 @@
 
 #include "core/deformable_limits.h"
 #include "core/hd.h"
+#include "core/homography.h"
 #include "core/image_view.h"
 #include "core/ncc.h"
 #include "core/ref_window.h"
@@ -89,47 +90,58 @@ struct AnchorSums {
   uint32_t inside;  // bit a: every sample of anchor a's window was valid
 };
 
+// The sums of anchor a's window under H, into lane l of `out`.
+MSP_HD void AnchorLaneSumsScalar(const AnchorWindows& w, int a, const ImageView& src, const Mat3& H,
+                                 int l, AnchorSums* out) {
+  out->s[l] = out->ss[l] = out->rs[l] = out->r[l] = out->rr[l] = out->count[l] = 0.0f;
+  out->inside &= ~(1u << l);
+  if (!((w.fast >> a) & 1u)) return;
+  bool inside = true;
+  for (int k = 0; k < w.num_samples; ++k) {
+    float s;
+    if (!SampleWarped(src, H, w.x[k][a], w.y[k][a], &s)) {
+      inside = false;
+      continue;
+    }
+    const float r = w.value[k][a];
+    out->s[l] += s;
+    out->ss[l] += s * s;
+    out->rs[l] += r * s;
+    out->r[l] += r;
+    out->rr[l] += r * r;
+    out->count[l] += 1.0f;
+  }
+  if (inside) out->inside |= 1u << l;
+}
+
 MSP_HD void AnchorSumsScalar(const AnchorWindows& w, const ImageView& src, const Mat3& H,
                              AnchorSums* out) {
   out->inside = 0u;
-  for (int a = 0; a < kMaxAnchors; ++a) {
-    out->s[a] = out->ss[a] = out->rs[a] = out->r[a] = out->rr[a] = out->count[a] = 0.0f;
-    if (!((w.fast >> a) & 1u)) continue;
-    bool inside = true;
-    for (int k = 0; k < w.num_samples; ++k) {
-      float s;
-      if (!SampleWarped(src, H, w.x[k][a], w.y[k][a], &s)) {
-        inside = false;
-        continue;
-      }
-      const float r = w.value[k][a];
-      out->s[a] += s;
-      out->ss[a] += s * s;
-      out->rs[a] += r * s;
-      out->r[a] += r;
-      out->rr[a] += r * r;
-      out->count[a] += 1.0f;
-    }
-    if (inside) out->inside |= 1u << a;
-  }
+  for (int a = 0; a < kMaxAnchors; ++a) AnchorLaneSumsScalar(w, a, src, H, a, out);
 }
 
 #if defined(MSP_WINDOW_SUMS_AVX2)
 static_assert(kMaxAnchors == kWindowLanes, "one vector lane per anchor");
 
-// AnchorSumsScalar with sample k of the 8 anchors in one vector. A lane whose
-// sample leaves the source reads pixel 0 instead, masked out of every sum.
-inline void AnchorSumsAvx2(const AnchorWindows& w, const ImageView& src, const Mat3& H,
-                           AnchorSums* out) {
-  const WarpLanes lanes = MakeWarpLanes(H, src);
-  const __m256i lane_bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-  __m256 ok = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
-      _mm256_and_si256(_mm256_set1_epi32(static_cast<int>(w.fast)), lane_bit), lane_bit));
+// Lane bit set where `bits` has the bit of the lane's anchor.
+inline __m256 LaneBits(uint32_t bits, __m256i lane_anchor) {
+  const __m256i bit = _mm256_sllv_epi32(_mm256_set1_epi32(1), lane_anchor);
+  return _mm256_castsi256_ps(
+      _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(static_cast<int>(bits)), bit), bit));
+}
+
+// The window sums of every lane under its warp, sample k of the lanes'
+// windows at rows.x(k), rows.y(k) with reference values rows.value(k). A
+// lane whose sample leaves the source reads pixel 0 instead, masked out of
+// every sum; lanes outside `ok` are never inside.
+template <typename Rows>
+inline void AnchorSumLanes(int num_samples, const Rows& rows, const WarpLanes& lanes, __m256 ok,
+                           const ImageView& src, AnchorSums* out) {
   MaskedSumLanes sums = ZeroMaskedSums();
-  for (int k = 0; k < w.num_samples; ++k) {
-    const WarpedCells cells = WarpCells(lanes, _mm256_loadu_ps(w.x[k]), _mm256_loadu_ps(w.y[k]));
+  for (int k = 0; k < num_samples; ++k) {
+    const WarpedCells cells = WarpCells(lanes, rows.x(k), rows.y(k));
     ok = _mm256_and_ps(ok, cells.inside);
-    AddMaskedSample(LoadBilinear(src, cells), _mm256_loadu_ps(w.value[k]), cells.inside, &sums);
+    AddMaskedSample(LoadBilinear(src, cells), rows.value(k), cells.inside, &sums);
   }
   _mm256_storeu_ps(out->s, sums.s);
   _mm256_storeu_ps(out->ss, sums.ss);
@@ -138,6 +150,22 @@ inline void AnchorSumsAvx2(const AnchorWindows& w, const ImageView& src, const M
   _mm256_storeu_ps(out->rr, sums.rr);
   _mm256_storeu_ps(out->count, sums.count);
   out->inside = static_cast<uint32_t>(_mm256_movemask_ps(ok));
+}
+
+// Lane a is anchor a.
+struct AnchorRows {
+  const AnchorWindows& w;
+  __m256 x(int k) const { return _mm256_loadu_ps(w.x[k]); }
+  __m256 y(int k) const { return _mm256_loadu_ps(w.y[k]); }
+  __m256 value(int k) const { return _mm256_loadu_ps(w.value[k]); }
+};
+
+// AnchorSumsScalar with sample k of the 8 anchors in one vector.
+inline void AnchorSumsAvx2(const AnchorWindows& w, const ImageView& src, const Mat3& H,
+                           AnchorSums* out) {
+  const __m256i identity = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  AnchorSumLanes(w.num_samples, AnchorRows{w}, MakeWarpLanes(H, src), LaneBits(w.fast, identity),
+                 src, out);
 }
 #endif
 
@@ -162,9 +190,25 @@ MSP_HD void AnchorNccCosts(const AnchorSums& sums, int num_samples, float* costs
 #endif
 }
 
-// Sum over the anchors of 1 - NCC of each anchor window under H, by
-// NccCost's rules; `anchor_ncc` (uniform weights, the anchor window's radius
-// and step) serves the windows over the reference border.
+// 1 - NCC of anchor a's window by NccCost's rules, from lane l of the
+// window sums and of their fast costs. `homography()` gives the lane's H;
+// it is called only for a window that leaves the source or the reference,
+// whose rules need it. `anchor_ncc` (uniform weights, the anchor window's
+// radius and step) serves the windows over the reference border.
+template <typename HomographyFn>
+MSP_HD float AnchorWindowCost(const AnchorWindows& w, int a, const AnchorSums& sums, int l,
+                              float fast_cost, const ImageView& ref, const ImageView& src,
+                              const NccParams& anchor_ncc, HomographyFn homography) {
+  if (!((w.fast >> a) & 1u)) return NccCost(ref, src, homography(), w.col[a], w.row[a], anchor_ncc);
+  if ((sums.inside >> l) & 1u) return ((w.textured >> a) & 1u) ? fast_cost : kMaxCost;
+  const Mat3 H = homography();
+  if (!CentreInSource(H, src, w.col[a], w.row[a])) return kMaxCost;
+  const PartialSums partial{
+      static_cast<int>(sums.count[l]), sums.r[l], sums.rr[l], sums.s[l], sums.ss[l], sums.rs[l]};
+  return NccFromPartialSums(partial, w.num_samples, w.spread[a]);
+}
+
+// Sum over the anchors of 1 - NCC of each anchor window under H.
 MSP_HD float AnchorCostSum(const AnchorWindows& w, const ImageView& ref, const ImageView& src,
                            const Mat3& H, const NccParams& anchor_ncc) {
   AnchorSums sums;
@@ -173,23 +217,110 @@ MSP_HD float AnchorCostSum(const AnchorWindows& w, const ImageView& ref, const I
   AnchorNccCosts(sums, w.num_samples, costs);
   float total = 0.0f;
   for (int a = 0; a < w.count; ++a) {
-    if (!((w.fast >> a) & 1u)) {
-      total += NccCost(ref, src, H, w.col[a], w.row[a], anchor_ncc);
-    } else if ((sums.inside >> a) & 1u) {
-      total += ((w.textured >> a) & 1u) ? costs[a] : kMaxCost;
-    } else if (CentreInSource(H, src, w.col[a], w.row[a])) {
-      const PartialSums partial{static_cast<int>(sums.count[a]),
-                                sums.r[a],
-                                sums.rr[a],
-                                sums.s[a],
-                                sums.ss[a],
-                                sums.rs[a]};
-      total += NccFromPartialSums(partial, w.num_samples, w.spread[a]);
-    } else {
-      total += kMaxCost;
-    }
+    total += AnchorWindowCost(w, a, sums, a, costs[a], ref, src, anchor_ncc, [&] { return H; });
   }
   return total;
+}
+
+// Up to kWindowLanes (plane, anchor window) pairs, scored together: lane l
+// warps the window of anchor `anchor[l]` with the plane of `warp[l]`. A pair
+// costs the same in any lane and beside any other pairs (every lane's
+// arithmetic is its own), which lets pairs computed apart stand in for each
+// other exactly. Prepared once for all source views.
+struct AnchorPairLanes {
+  int count;
+  int anchor[kWindowLanes];  // spare lanes repeat lane 0
+  PlaneWarp warp[kWindowLanes];
+#if defined(MSP_WINDOW_SUMS_AVX2)
+  __m256 m[3];      // the warps' m, a lane each
+  __m256 fast;      // lanes whose anchor has a fast window
+  __m256 textured;  // lanes whose anchor's window has texture
+  __m256 x[kMaxAnchorWindowSamples], y[kMaxAnchorWindowSamples],
+      value[kMaxAnchorWindowSamples];  // the lanes' windows, sample-major
+#endif
+};
+
+MSP_HD void PrepareAnchorPairLanes(const AnchorWindows& w, const int* anchor, const PlaneWarp* warp,
+                                   int count, AnchorPairLanes* out) {
+  out->count = count;
+  for (int l = 0; l < kWindowLanes; ++l) {
+    const int from = l < count ? l : 0;
+    out->anchor[l] = anchor[from];
+    out->warp[l] = warp[from];
+  }
+#if defined(MSP_WINDOW_SUMS_AVX2)
+  // Built from the values, not reloaded from the arrays just written: a
+  // vector load of fresh scalar stores stalls.
+  const int* a = out->anchor;
+  const __m256i index = _mm256_setr_epi32(a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7]);
+  for (int c = 0; c < 3; ++c) {
+    const PlaneWarp* v = out->warp;
+    out->m[c] = _mm256_setr_ps(v[0].m[c], v[1].m[c], v[2].m[c], v[3].m[c], v[4].m[c], v[5].m[c],
+                               v[6].m[c], v[7].m[c]);
+  }
+  out->fast = LaneBits(w.fast, index);
+  out->textured = LaneBits(w.textured, index);
+  for (int k = 0; k < w.num_samples; ++k) {
+    out->x[k] = _mm256_permutevar8x32_ps(_mm256_loadu_ps(w.x[k]), index);
+    out->y[k] = _mm256_permutevar8x32_ps(_mm256_loadu_ps(w.y[k]), index);
+    out->value[k] = _mm256_permutevar8x32_ps(_mm256_loadu_ps(w.value[k]), index);
+  }
+#endif
+}
+
+// 1 - NCC of every prepared pair in the source of `rel` (anchor windows'
+// rules, AnchorWindowCost), into costs[0 .. lanes.count).
+MSP_HD void AnchorPairCosts(const AnchorWindows& w, const AnchorPairLanes& lanes,
+                            const RelativePose& rel, const ImageView& ref, const ImageView& src,
+                            const NccParams& anchor_ncc, float* costs) {
+#if defined(MSP_WINDOW_SUMS_AVX2)
+  // H = KRK - Kt m^T per lane (WarpHomography with the planes in lanes).
+  WarpLanes warp = MakeWarpLanes(rel.KRK, src);
+  const float kt[3] = {rel.Kt.x, rel.Kt.y, rel.Kt.z};
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      warp.h[3 * r + c] = _mm256_fnmadd_ps(_mm256_set1_ps(kt[r]), lanes.m[c], warp.h[3 * r + c]);
+    }
+  }
+  struct PairRows {
+    const AnchorPairLanes& lanes;
+    __m256 x(int k) const { return lanes.x[k]; }
+    __m256 y(int k) const { return lanes.y[k]; }
+    __m256 value(int k) const { return lanes.value[k]; }
+  };
+  AnchorSums sums;
+  AnchorSumLanes(w.num_samples, PairRows{lanes}, warp, lanes.fast, src, &sums);
+  float fast[kWindowLanes];
+  AnchorNccCosts(sums, w.num_samples, fast);
+  // Lanes whose whole window is in both images, with texture, cost `fast`.
+  const uint32_t simple = sums.inside & static_cast<uint32_t>(_mm256_movemask_ps(lanes.textured));
+  for (int l = 0; l < lanes.count; ++l) {
+    if ((simple >> l) & 1u) {
+      costs[l] = fast[l];
+      continue;
+    }
+    costs[l] = AnchorWindowCost(w, lanes.anchor[l], sums, l, fast[l], ref, src, anchor_ncc, [&] {
+      Mat3 H;
+      for (int i = 0; i < 9; ++i) {
+        float h[kWindowLanes];
+        _mm256_storeu_ps(h, warp.h[i]);
+        H.m[i] = h[l];
+      }
+      return H;
+    });
+  }
+#else
+  for (int l = 0; l < lanes.count; ++l) {
+    const int a = lanes.anchor[l];
+    const Mat3 H = WarpHomography(rel, lanes.warp[l]);
+    AnchorSums sums;
+    sums.inside = 0u;
+    AnchorLaneSumsScalar(w, a, src, H, 0, &sums);
+    const float fast =
+        NccFromSourceSums(SourceSums{sums.s[0], sums.ss[0], sums.rs[0]}, w.num_samples);
+    costs[l] = AnchorWindowCost(w, a, sums, 0, fast, ref, src, anchor_ncc, [&] { return H; });
+  }
+#endif
 }
 
 }  // namespace core

@@ -55,22 +55,34 @@ MSP_HD void PrepareDeformableWindows(const PassParams& p, int col, int row,
                        d.anchor_window_radius, d.anchor_window_step, &w->anchors);
 }
 
+// The photometric part of the deformable cost from the centre window's NCC
+// cost and the sum of the anchor windows' costs.
+MSP_HD float MixDeformable(float centre, float anchor_sum, int num_anchors,
+                           const DeformableParams& d) {
+  return d.lambda * centre + (1.0f - d.lambda) * (anchor_sum / num_anchors);
+}
+
+// True when the deformable cost in source view j under H adds the anchor
+// windows to the centre window's cost `centre`. A view that does not see p
+// costs kMaxCost, as in every matching cost: anchors it does see do not make
+// it a view of p.
+MSP_HD bool AnchorsTakePart(const PassParams& p, const DeformableWindows& w, int j, const Mat3& H,
+                            float centre) {
+  return w.anchors.count > 0 &&
+         !(centre >= kMaxCost && !CentreInSource(H, p.src[j].image, w.centre.col, w.centre.row));
+}
+
 // The photometric part of the deformable cost in source view j under H
 // (p's plane), given the centre window's NCC cost `centre`: the anchor
 // windows' costs are added to it.
 MSP_HD float DeformableFromCentre(const PassParams& p, const DeformableWindows& w, int j,
                                   const Mat3& H, float centre, const DeformableParams& d) {
-  const SourceView& s = p.src[j];
-  // A view that does not see p costs kMaxCost, as in every matching cost:
-  // anchors it does see do not make it a view of p.
-  if (w.anchors.count == 0 ||
-      (centre >= kMaxCost && !CentreInSource(H, s.image, w.centre.col, w.centre.row))) {
-    return centre;
-  }
+  if (!AnchorsTakePart(p, w, j, H, centre)) return centre;
   // H maps every reference pixel on p's plane: an anchor window is the
   // part of p's (deformed) patch that lies around the anchor.
-  const float sum = AnchorCostSum(w.anchors, p.ref_image, s.image, H, AnchorNccParams(p.ncc, d));
-  return d.lambda * centre + (1.0f - d.lambda) * (sum / w.anchors.count);
+  const float sum =
+      AnchorCostSum(w.anchors, p.ref_image, p.src[j].image, H, AnchorNccParams(p.ncc, d));
+  return MixDeformable(centre, sum, w.anchors.count, d);
 }
 
 // The photometric part of the deformable cost of a valid prepared
@@ -136,31 +148,88 @@ MSP_HD void DeformableViewCosts(const PassParams& p, const DeformableWindows& w,
 }
 
 static_assert(kMaxAnchors <= kWindowLanes, "one vector lane per anchor's candidate");
+static_assert(kMaxSourceViews <= 32, "a view mask has one bit per source view");
+
+// The anchor windows' summed costs of the anchors' candidates: sum[k][j] for
+// candidate k in source view j.
+struct CandidateAnchorSums {
+  float sum[kMaxAnchors][kMaxSourceViews];
+};
+
+// Fills the anchor sums of DeformableCandidateViewCosts on the spot, under
+// each candidate's plane as prepared at the pixel. Other providers (the CPU
+// back-end's cache of shared pairs) must give the same sums up to rounding.
+struct DirectAnchorSums {
+  const PassParams& p;
+  DeformableParams d;
+  // Sets out->sum[k][j] for every bit j of need[k].
+  MSP_HD void operator()(const AnchorWindows& w, const PreparedPlane* planes, const uint32_t* need,
+                         CandidateAnchorSums* out) const {
+    for (int k = 0; k < kMaxAnchors; ++k) ForCandidate(w, planes[k], need[k], out->sum[k]);
+  }
+
+  // Sets sum[j] for every bit j of `views`: the candidate `plane`'s.
+  MSP_HD void ForCandidate(const AnchorWindows& w, const PreparedPlane& plane, uint32_t views,
+                           float* sum) const {
+    const NccParams anchor_ncc = AnchorNccParams(p.ncc, d);
+    for (int j = 0; j < p.num_src; ++j) {
+      if (!((views >> j) & 1u)) continue;
+      const Mat3 H = WarpHomography(p.src[j].rel, plane.warp);
+      sum[j] = AnchorCostSum(w, p.ref_image, p.src[j].image, H, anchor_ncc);
+    }
+  }
+};
 
 // DeformableViewCosts in every view of up to kWindowLanes hypotheses h[k]
 // (rows kMaxSourceViews apart; rows whose `has` is false cost kMaxCost), the
-// centre windows of all of them at once per view, as CandidateViewCosts.
+// centre windows of all of them at once per view, as CandidateViewCosts. The
+// anchor windows' sums come from `anchor_sums` (DirectAnchorSums' form),
+// asked once for every candidate and view that needs them.
+template <typename AnchorSumsFn>
+MSP_HD void DeformableCandidateViewCosts(const PassParams& p, const DeformableWindows& w,
+                                         const PlaneHypothesis* h, const bool* has, int num,
+                                         const DeformableParams& d, const AnchorSumsFn& anchor_sums,
+                                         float* costs, float* conventional) {
+  PreparedPlane planes[kWindowLanes] = {};  // the provider reads the valid ones
+  float geometric[kWindowLanes][kMaxSourceViews];
+  const uint32_t lanes = PrepareCandidates(p, w.centre, h, has, num, planes, geometric);
+  float centre[kMaxAnchors][kMaxSourceViews];
+  uint32_t need[kMaxAnchors] = {};
+  for (int j = 0; j < p.num_src; ++j) {
+    Mat3 H[kWindowLanes];
+    float view_centre[kWindowLanes];
+    CandidateWindowCosts(p, w.centre, j, planes, lanes, num, H, view_centre);
+    for (int k = 0; k < num; ++k) {
+      centre[k][j] = view_centre[k];
+      if (((lanes >> k) & 1u) && AnchorsTakePart(p, w, j, H[k], view_centre[k])) {
+        need[k] |= 1u << j;
+      }
+    }
+  }
+  CandidateAnchorSums sums;
+  anchor_sums(w.anchors, planes, need, &sums);
+  for (int k = 0; k < num; ++k) {
+    for (int j = 0; j < p.num_src; ++j) {
+      const int i = k * kMaxSourceViews + j;
+      if (!((lanes >> k) & 1u)) {
+        costs[i] = conventional[i] = kMaxCost;
+        continue;
+      }
+      const float photometric =
+          ((need[k] >> j) & 1u) ? MixDeformable(centre[k][j], sums.sum[k][j], w.anchors.count, d)
+                                : centre[k][j];
+      costs[i] = photometric + geometric[k][j];
+      conventional[i] = centre[k][j] + geometric[k][j];
+    }
+  }
+}
+
+// The same with the anchor sums computed on the spot.
 MSP_HD void DeformableCandidateViewCosts(const PassParams& p, const DeformableWindows& w,
                                          const PlaneHypothesis* h, const bool* has, int num,
                                          const DeformableParams& d, float* costs,
                                          float* conventional) {
-  PreparedPlane planes[kWindowLanes];
-  float geometric[kWindowLanes][kMaxSourceViews];
-  const uint32_t lanes = PrepareCandidates(p, w.centre, h, has, num, planes, geometric);
-  for (int j = 0; j < p.num_src; ++j) {
-    Mat3 H[kWindowLanes];
-    float centre[kWindowLanes];
-    CandidateWindowCosts(p, w.centre, j, planes, lanes, num, H, centre);
-    for (int k = 0; k < num; ++k) {
-      const int i = k * kMaxSourceViews + j;
-      if ((lanes >> k) & 1u) {
-        costs[i] = DeformableFromCentre(p, w, j, H[k], centre[k], d) + geometric[k][j];
-        conventional[i] = centre[k] + geometric[k][j];
-      } else {
-        costs[i] = conventional[i] = kMaxCost;
-      }
-    }
-  }
+  DeformableCandidateViewCosts(p, w, h, has, num, d, DirectAnchorSums{p, d}, costs, conventional);
 }
 
 }  // namespace core

@@ -40,10 +40,13 @@ MSP_HD bool UsableCandidate(const PassParams& p, int col, int row, const PlaneHy
                                                            static_cast<float>(row))) < 0.0f;
 }
 
-// Falls back to the conventional update when no candidate is usable.
+// Falls back to the conventional update when no candidate is usable. The
+// anchors' candidates take their anchor windows' sums from `anchor_sums`
+// (DeformableCandidateViewCosts).
+template <typename AnchorSumsFn>
 MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int iteration,
                                   const AnchorSet& anchors, const PlaneMapView& planes,
-                                  const DeformableParams& d) {
+                                  const DeformableParams& d, const AnchorSumsFn& anchor_sums) {
   const PixelStateView& s = p.state;
   const int i = s.Index(col, row);
   const uint32_t pixel = static_cast<uint32_t>(i);
@@ -77,7 +80,7 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
   DeformableWindows windows;
   PrepareDeformableWindows(p, col, row, anchors, d, &windows);
   // The anchors' candidates in every view: view selection reads them all.
-  DeformableCandidateViewCosts(p, windows, cand, has, fit, d, costs, conventional);
+  DeformableCandidateViewCosts(p, windows, cand, has, fit, d, anchor_sums, costs, conventional);
   Rng select_rng =
       MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamSelect, pixel));
   float weights[kMaxSourceViews];
@@ -124,6 +127,13 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
   s.mask[i] = mask;
   // The conventional cost of the chosen plane: what neighbours compare against.
   s.cost[i] = stored_cost;
+}
+
+// The same with the anchor windows' sums computed on the spot.
+MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int iteration,
+                                  const AnchorSet& anchors, const PlaneMapView& planes,
+                                  const DeformableParams& d) {
+  DeformableUpdatePixel(p, col, row, iteration, anchors, planes, d, DirectAnchorSums{p, d});
 }
 
 }  // namespace core

@@ -98,6 +98,57 @@ TEST(AnchorWindows, FlatAnchorWindowCostsMax) {
   EXPECT_EQ(AnchorCostSum(w, View(flat), View(src), Warp(0.4f, 0.3f), kAnchorNcc), kMaxCost);
 }
 
+// Pairs of (plane, anchor window) in the lanes of one batch cost what the
+// general NCC gives each window under its own homography, and a pair's cost
+// does not depend on its lane or on the pairs beside it: the bits are equal.
+TEST(AnchorWindows, PairLanesCostWhatEachPairCostsAlone) {
+  const std::vector<float> ref = Noise(7), src = Noise(8);
+  AnchorWindows w;
+  PrepareAnchorWindows(View(ref), kCols, kRows, kMaxAnchors, 5, 5, &w);
+  // H = KRK - Kt m^T: Warp(0.4, 0.3) moved by each plane's m.
+  RelativePose rel{};
+  rel.KRK = Warp(0.4f, 0.3f);
+  rel.Kt = Vec3{2.0f, -1.0f, 0.001f};
+  PlaneWarp warps[kWindowLanes];
+  for (int l = 0; l < kWindowLanes; ++l) {
+    warps[l] = PlaneWarp{{0.002f * (l - 3), -0.001f * l, 0.4f * l - 1.0f}};
+  }
+  // Lanes mix anchors (the border anchor 2, the partial anchor 4, a repeat).
+  const int anchors[kWindowLanes] = {4, 0, 2, 7, 1, 4, 6, 3};
+  AnchorPairLanes lanes;
+  PrepareAnchorPairLanes(w, anchors, warps, kWindowLanes, &lanes);
+  float costs[kWindowLanes];
+  AnchorPairCosts(w, lanes, rel, View(ref), View(src), kAnchorNcc, costs);
+  for (int l = 0; l < kWindowLanes; ++l) {
+    const Mat3 H = WarpHomography(rel, warps[l]);
+    const int a = anchors[l];
+    EXPECT_NEAR(costs[l], NccCost(View(ref), View(src), H, kCols[a], kRows[a], kAnchorNcc), 1e-4f)
+        << "lane " << l;
+  }
+  EXPECT_NE(costs[0], costs[5]);  // anchor 4 under two planes
+  // Each pair alone in a batch of one, in the last lane of a batch of 7.
+  for (int l = 0; l < kWindowLanes; ++l) {
+    AnchorPairLanes one;
+    PrepareAnchorPairLanes(w, anchors + l, warps + l, 1, &one);
+    float alone;
+    AnchorPairCosts(w, one, rel, View(ref), View(src), kAnchorNcc, &alone);
+    EXPECT_EQ(alone, costs[l]) << "lane " << l;
+    int moved_anchors[7];
+    PlaneWarp moved_warps[7];
+    for (int i = 0; i < 7; ++i) {
+      moved_anchors[i] = anchors[(l + 1 + i) % kWindowLanes];
+      moved_warps[i] = warps[(l + 1 + i) % kWindowLanes];
+    }
+    moved_anchors[6] = anchors[l];
+    moved_warps[6] = warps[l];
+    AnchorPairLanes moved;
+    PrepareAnchorPairLanes(w, moved_anchors, moved_warps, 7, &moved);
+    float moved_costs[kWindowLanes];
+    AnchorPairCosts(w, moved, rel, View(ref), View(src), kAnchorNcc, moved_costs);
+    EXPECT_EQ(moved_costs[6], costs[l]) << "lane " << l;
+  }
+}
+
 }  // namespace
 }  // namespace core
 }  // namespace msp

@@ -10,7 +10,9 @@
 #
 # By default the two runs of a pair follow each other, on all cores. With
 # --concurrent they run at the same time on one thread each, so that both see
-# the same machine: a drift then slows both alike and leaves the ratio.
+# the same machine: a drift then slows both alike and leaves the ratio. When
+# the first of the two ends, a filler run takes its core until the other ends,
+# so that neither finishes alone on a quieter machine (which would flatter it).
 #
 # <workspace> is a dense workspace such as msp_make_scene writes; it is not
 # modified (its stereo/depth_maps and normal_maps are left out of the copies).
@@ -37,12 +39,28 @@ run() {
     "$@" > "$scratch/$name.log" 2>&1 || { cat "$scratch/$name.log"; return 1; }
 }
 
+# One core kept busy with conventional runs until killed.
+keep_busy() {
+  while :; do run filler --MspStereo.deformable false --MspStereo.num_threads 1 "$@" || true; done
+}
+
+# Background jobs in process groups of their own: a filler dies with its runs.
+set -m
 echo "pair  default: wall s  user s  peak MiB | conventional: wall s  user s  peak MiB | ratio wall  user"
 for ((k = 1; k <= pairs; ++k)); do
   if [ "$concurrent" = 1 ]; then
     run default --MspStereo.num_threads 1 "$@" &
+    default_pid=$!
     run conventional --MspStereo.deformable false --MspStereo.num_threads 1 "$@" &
-    wait -n && wait -n
+    conventional_pid=$!
+    wait -n "$default_pid" "$conventional_pid"
+    keep_busy "$@" > /dev/null 2>&1 &
+    filler_pid=$!
+    while kill -0 "$default_pid" 2> /dev/null || kill -0 "$conventional_pid" 2> /dev/null; do
+      sleep 1
+    done
+    kill -- "-$filler_pid" 2> /dev/null || true
+    wait "$filler_pid" 2> /dev/null || true
   else
     run default "$@"
     run conventional --MspStereo.deformable false "$@"

@@ -4,7 +4,8 @@
 // anchors in one vector, so the small 3x3 windows fill whole vectors and
 // every anchor's NCC comes out of the same sum vectors. A window that leaves
 // the source in part is summed over its valid samples, as the centre window
-// is (window_cost.h).
+// is (window_cost.h). Pairs of (plane, anchor window) taken from several
+// hypotheses fill the lanes the same way (AnchorPairLanes).
 #pragma once
 
 #include "core/deformable_limits.h"

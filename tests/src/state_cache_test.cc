@@ -3,10 +3,25 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 namespace msp {
 namespace {
+
+// A fresh spill directory, removed with everything in it at the end of the test.
+class SpillDir {
+ public:
+  SpillDir() {
+    char dir_template[] = "/tmp/msp_state_cache_XXXXXX";
+    path_ = mkdtemp(dir_template);
+  }
+  ~SpillDir() { std::filesystem::remove_all(path_); }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
 
 PixelState Filled(int w, int h, float value) {
   PixelState s(w, h);
@@ -16,8 +31,8 @@ PixelState Filled(int w, int h, float value) {
 }
 
 TEST(StateCache, SpillsBeyondBudgetAndReadsBack) {
-  char dir_template[] = "/tmp/msp_state_cache_XXXXXX";
-  const std::string dir = mkdtemp(dir_template);
+  const SpillDir spill;
+  const std::string& dir = spill.path();
   const size_t one = Filled(16, 8, 0.0f).Bytes();
   StateCache cache(one + one / 2, dir);  // room for one state
   cache.Put(0, Filled(16, 8, 1.0f));
@@ -37,8 +52,8 @@ TEST(StateCache, SpillsBeyondBudgetAndReadsBack) {
 // The segmentation prior's edge map and the reliability classes travel with
 // the state: present planes come back byte for byte, absent ones stay absent.
 TEST(StateCache, SpillKeepsPriorEdgesAndClasses) {
-  char dir_template[] = "/tmp/msp_state_cache_XXXXXX";
-  const std::string dir = mkdtemp(dir_template);
+  const SpillDir spill;
+  const std::string& dir = spill.path();
   PixelState with_edges = Filled(16, 8, 1.0f);
   with_edges.edges.assign(with_edges.depth.size(), 0);
   for (size_t i = 0; i < with_edges.edges.size(); i += 3)

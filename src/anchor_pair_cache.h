@@ -82,8 +82,9 @@ class AnchorPairCachePool {
 
 // The anchor sums of a deformable update's anchors' candidates
 // (core::DirectAnchorSums' role) from the pairs of `cache`, computing and
-// adding the pairs it lacks. `planes` is the iteration's snapshot that the
-// candidates came from.
+// adding the pairs it lacks. Only for core::DeformableUpdatePixel, whose
+// candidate k is anchor k's plane in `planes`, the iteration's snapshot: the
+// sums are taken under that plane, not under `prepared`.
 class CachedAnchorSums {
  public:
   CachedAnchorSums(const core::PassParams& params, const core::PlaneMapView& planes,

@@ -16,21 +16,20 @@ constexpr uint64_t kEmpty = ~0ull;
 
 int PixelOf(const core::PassParams& p, int col, int row) { return row * p.state.width + col; }
 
-uint64_t* MapSlots(size_t bytes) {
-  void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  if (p == MAP_FAILED) throw std::bad_alloc();
-  return static_cast<uint64_t*>(p);  // page-aligned: every slot starts a cache line
-}
-
 }  // namespace
 
 void AnchorPairCache::Unmap::operator()(uint64_t* p) const { munmap(p, bytes); }
 
+AnchorPairCache::Slots AnchorPairCache::MapSlots(size_t bytes) {
+  void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (p == MAP_FAILED) throw std::bad_alloc();
+  return Slots(static_cast<uint64_t*>(p), Unmap{bytes});  // page-aligned: slots start cache lines
+}
+
 AnchorPairCache::AnchorPairCache(int num_views)
     // The key's word, then the costs (2 per word), in whole cache lines.
     : slot_words_((1 + (num_views + 1) / 2 + kLineWords - 1) / kLineWords * kLineWords),
-      bytes_(kNumSlots * slot_words_ * sizeof(uint64_t)),
-      slots_(MapSlots(bytes_), Unmap{bytes_}) {
+      slots_(MapSlots(kNumSlots * slot_words_ * sizeof(uint64_t))) {
   Clear();
 }
 

@@ -50,7 +50,6 @@ class AnchorPairCache {
   uint64_t* SlotOf(uint64_t key) const;
 
   size_t slot_words_;  // 64-bit words per slot
-  size_t bytes_;
   // Mapped, not allocated: a block of megabytes from malloc raises glibc's
   // mmap threshold, after which the passes' smaller buffers fragment the
   // heap (peak memory +18 MiB at 320x240, measured).
@@ -58,7 +57,9 @@ class AnchorPairCache {
     size_t bytes;
     void operator()(uint64_t* p) const;
   };
-  std::unique_ptr<uint64_t[], Unmap> slots_;
+  using Slots = std::unique_ptr<uint64_t[], Unmap>;
+  static Slots MapSlots(size_t bytes);
+  Slots slots_;
 };
 
 // Caches lent to the rows of a sweep, one per row being swept at a time.

@@ -233,9 +233,8 @@ struct AnchorPairLanes {
   int anchor[kWindowLanes];  // spare lanes repeat lane 0
   PlaneWarp warp[kWindowLanes];
 #if defined(MSP_WINDOW_SUMS_AVX2)
-  __m256 m[3];      // the warps' m, a lane each
-  __m256 fast;      // lanes whose anchor has a fast window
-  __m256 textured;  // lanes whose anchor's window has texture
+  __m256 m[3];  // the warps' m, a lane each
+  __m256 fast;  // lanes whose anchor has a fast window
   __m256 x[kMaxAnchorWindowSamples], y[kMaxAnchorWindowSamples],
       value[kMaxAnchorWindowSamples];  // the lanes' windows, sample-major
 #endif
@@ -260,7 +259,6 @@ MSP_HD void PrepareAnchorPairLanes(const AnchorWindows& w, const int* anchor, co
                                v[6].m[c], v[7].m[c]);
   }
   out->fast = LaneBits(w.fast, index);
-  out->textured = LaneBits(w.textured, index);
   for (int k = 0; k < w.num_samples; ++k) {
     out->x[k] = _mm256_permutevar8x32_ps(_mm256_loadu_ps(w.x[k]), index);
     out->y[k] = _mm256_permutevar8x32_ps(_mm256_loadu_ps(w.y[k]), index);
@@ -293,13 +291,7 @@ MSP_HD void AnchorPairCosts(const AnchorWindows& w, const AnchorPairLanes& lanes
   AnchorSumLanes(w.num_samples, PairRows{lanes}, warp, lanes.fast, src, &sums);
   float fast[kWindowLanes];
   AnchorNccCosts(sums, w.num_samples, fast);
-  // Lanes whose whole window is in both images, with texture, cost `fast`.
-  const uint32_t simple = sums.inside & static_cast<uint32_t>(_mm256_movemask_ps(lanes.textured));
   for (int l = 0; l < lanes.count; ++l) {
-    if ((simple >> l) & 1u) {
-      costs[l] = fast[l];
-      continue;
-    }
     costs[l] = AnchorWindowCost(w, lanes.anchor[l], sums, l, fast[l], ref, src, anchor_ncc, [&] {
       Mat3 H;
       for (int i = 0; i < 9; ++i) {

@@ -67,6 +67,8 @@ class AnchorPairCachePool {
  public:
   explicit AnchorPairCachePool(int num_views) : num_views_(num_views) {}
 
+  int num_views() const { return num_views_; }
+
   // A cache to use until Release, with whatever pairs it holds.
   AnchorPairCache* Acquire();
   void Release(AnchorPairCache* cache);

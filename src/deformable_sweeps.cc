@@ -92,33 +92,47 @@ ReliabilityMaps MakeReliabilityMaps(std::vector<uint8_t> classes, int width, int
 
 DeformableStats RunDeformableCheckerboardIterations(
     const core::PassParams& params, const ReliabilityMaps& maps, const DeformableSettings& settings,
-    int num_iterations, int num_threads, std::vector<core::PriorAnchors>* prior_anchors) {
+    int num_iterations, int num_threads, DeformableBuffers* buffers,
+    std::vector<core::PriorAnchors>* prior_anchors) {
   const core::PixelStateView& s = params.state;
   const int width = s.width, height = s.height;
   const size_t n = static_cast<size_t>(width) * height;
   // Slots of the unreliable pixels in the anchor array.
-  std::vector<int> slot(n, -1);
+  std::vector<int>& slot = buffers->slot;
+  slot.assign(n, -1);
   int num_slots = 0;
   for (size_t i = 0; i < n; ++i) {
     if (maps.classes[i] == core::kUnreliable) slot[i] = num_slots++;
   }
-  std::vector<core::AnchorSet> anchors(num_slots);
-  std::vector<core::AnchorHits> hits(num_slots);
-  std::vector<float> depth(n), normal(3 * n);
+  std::vector<core::AnchorSet>& anchors = buffers->anchors;
+  std::vector<core::AnchorHits>& hits = buffers->hits;
+  anchors.resize(num_slots);
+  hits.resize(num_slots);
+  std::vector<float>& depth = buffers->depth;
+  std::vector<float>& normal = buffers->normal;
+  depth.resize(n);  // sized before the views below take their addresses
+  normal.resize(3 * n);
   const core::PlaneMapView planes{depth.data(), normal.data(), width, height};
   const core::AnchorMaps anchor_maps{
       maps.classes.data(), maps.nearest.data(),  depth.data(), width, height,
       settings.edges,      settings.nearest_edge};
-  AnchorPairCachePool caches(params.num_src);
+  if (buffers->caches == nullptr || buffers->caches->num_views() != params.num_src) {
+    buffers->caches = std::make_unique<AnchorPairCachePool>(params.num_src);
+  }
+  AnchorPairCachePool& caches = *buffers->caches;
+  // The anchored pixels of each row in the first iteration, then the first
+  // entry of each row among them: the prior's anchors are filled in parallel.
+  std::vector<int>& row_start = buffers->row_start;
+  row_start.assign(height + 1, 0);
   DeformableStats stats;
   for (int iteration = 0; iteration < num_iterations; ++iteration) {
     caches.ClearAll();
-    depth.assign(s.depth, s.depth + n);
-    normal.assign(s.normal, s.normal + 3 * n);
+    std::copy(s.depth, s.depth + n, depth.begin());
+    std::copy(s.normal, s.normal + 3 * n, normal.begin());
     std::atomic<long long> anchored{0};
     const auto anchors_start = std::chrono::steady_clock::now();
     ParallelFor(0, height, num_threads, [&](int row) {
-      long long count = 0;
+      int count = 0;
       for (int col = 0; col < width; ++col) {
         const int i = row * width + col;
         if (slot[i] < 0) continue;
@@ -134,17 +148,22 @@ DeformableStats RunDeformableCheckerboardIterations(
         count += anchors[slot[i]].count > 0;
       }
       anchored += count;
+      if (iteration == 0) row_start[row + 1] = count;
     });
     stats.anchored_updates += anchored;
     stats.anchor_seconds += SecondsSince(anchors_start);
     if (iteration == 0 && prior_anchors != nullptr) {
-      prior_anchors->clear();
-      for (size_t i = 0; i < n; ++i) {
-        if (slot[i] < 0 || anchors[slot[i]].count == 0) continue;
-        prior_anchors->push_back(ToPriorAnchors(params.ref_camera, anchors[slot[i]], depth.data(),
-                                                width, static_cast<int>(i % width),
-                                                static_cast<int>(i / width)));
-      }
+      for (int row = 0; row < height; ++row) row_start[row + 1] += row_start[row];
+      prior_anchors->resize(row_start[height]);
+      ParallelFor(0, height, num_threads, [&](int row) {
+        int entry = row_start[row];
+        for (int col = 0; col < width; ++col) {
+          const int i = row * width + col;
+          if (slot[i] < 0 || anchors[slot[i]].count == 0) continue;
+          (*prior_anchors)[entry++] =
+              ToPriorAnchors(params.ref_camera, anchors[slot[i]], depth.data(), width, col, row);
+        }
+      });
     }
     const auto sweep_start = std::chrono::steady_clock::now();
     for (int color = 0; color < 2; ++color) {

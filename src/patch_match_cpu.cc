@@ -233,12 +233,11 @@ class CpuRunner {
         // The prior's edges confine the passes after the one that made them,
         // so none are made in the final pass.
         const bool run_prior = prior_ != nullptr && deformable && !final_pass;
-        std::vector<core::PriorAnchors> prior_anchors;
         if (deformable) {
           // The previous pass of this image (the last of the coarser round at a round start).
           RunDeformableIterations(params, round, pass > 0 ? pass - 1 : num_passes - 1,
                                   std::move(state.classes), state.edges,
-                                  run_prior ? &prior_anchors : nullptr);
+                                  run_prior ? &prior_anchors_ : nullptr);
           state.classes.clear();
         } else {
           RunCheckerboardIterations(params, kIterationsPerPass, threads_);
@@ -252,7 +251,7 @@ class CpuRunner {
           LocalRefineState(params, threads_);
         }
         const double refine_seconds = SecondsSince(refine_start);
-        if (run_prior) RunPrior(level, problem, pass_id, round, prior_anchors, &state);
+        if (run_prior) RunPrior(level, problem, pass_id, round, prior_anchors_, &state);
         const bool preview = final_pass && prior_ != nullptr && msp_.write_previews &&
                              !sink_.HasFinalOutput(problem.ref);
         if (last_round) WriteOutputs(params, problem, pass, num_passes);
@@ -315,7 +314,7 @@ class CpuRunner {
       settings.nearest_edge = nearest_edge_.data();
     }
     const DeformableStats stats = RunDeformableCheckerboardIterations(
-        params, maps, settings, kIterationsPerPass, threads_, prior_anchors);
+        params, maps, settings, kIterationsPerPass, threads_, &deformable_buffers_, prior_anchors);
     const double pixels = static_cast<double>(maps.width) * maps.height;
     std::printf(
         "  reliable %.1f%%, unreliable %.1f%%, deformable updates %.1f%% of pixels; %s %.2f s, "
@@ -407,9 +406,11 @@ class CpuRunner {
   StateCache cache_;
   std::vector<int> run_;
   std::unique_ptr<Level> coarser_;
-  std::unique_ptr<PriorDriver> prior_;  // null = no segmentation prior
-  std::vector<uint8_t> confining_;      // scratch: the confining bit of the current image
-  std::vector<int> nearest_edge_;       // scratch: its nearest confining pixel of every pixel
+  std::unique_ptr<PriorDriver> prior_;    // null = no segmentation prior
+  std::vector<uint8_t> confining_;        // scratch: the confining bit of the current image
+  std::vector<int> nearest_edge_;         // scratch: its nearest confining pixel of every pixel
+  DeformableBuffers deformable_buffers_;  // scratch of the deformable iterations
+  std::vector<core::PriorAnchors> prior_anchors_;  // scratch: the anchors the prior reads
   std::chrono::steady_clock::time_point start_;
 };
 

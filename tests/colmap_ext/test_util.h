@@ -1,8 +1,7 @@
-// Helpers for the colmap_ext tests: a self-removing temporary folder, raw file
-// access and capturing the message of an expected InputError.
+// Helpers for the colmap_ext tests: the shared self-removing temporary folder
+// (temp_dir.h), raw file access and capturing the message of an expected
+// InputError.
 #pragma once
-
-#include <stdlib.h>
 
 #include <filesystem>
 #include <fstream>
@@ -10,30 +9,10 @@
 #include <string>
 
 #include "errors.h"
+#include "temp_dir.h"
 
 namespace msp {
 namespace test {
-
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern =
-        (std::filesystem::temp_directory_path() / "msp_colmap_test_XXXXXX").string();
-    path_ = ::mkdtemp(&pattern[0]);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  const std::string& path() const { return path_; }
-  std::string operator/(const std::string& name) const { return path_ + "/" + name; }
-
- private:
-  std::string path_;
-};
 
 inline void WriteRaw(const std::string& path, const std::string& bytes) {
   std::filesystem::create_directories(std::filesystem::path(path).parent_path());

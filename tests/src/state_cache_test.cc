@@ -2,26 +2,12 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <filesystem>
 #include <string>
+
+#include "temp_dir.h"
 
 namespace msp {
 namespace {
-
-// A fresh spill directory, removed with everything in it at the end of the test.
-class SpillDir {
- public:
-  SpillDir() {
-    char dir_template[] = "/tmp/msp_state_cache_XXXXXX";
-    path_ = mkdtemp(dir_template);
-  }
-  ~SpillDir() { std::filesystem::remove_all(path_); }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
 
 PixelState Filled(int w, int h, float value) {
   PixelState s(w, h);
@@ -31,7 +17,7 @@ PixelState Filled(int w, int h, float value) {
 }
 
 TEST(StateCache, SpillsBeyondBudgetAndReadsBack) {
-  const SpillDir spill;
+  const test::TempDir spill;
   const std::string& dir = spill.path();
   const size_t one = Filled(16, 8, 0.0f).Bytes();
   StateCache cache(one + one / 2, dir);  // room for one state
@@ -52,7 +38,7 @@ TEST(StateCache, SpillsBeyondBudgetAndReadsBack) {
 // The segmentation prior's edge map and the reliability classes travel with
 // the state: present planes come back byte for byte, absent ones stay absent.
 TEST(StateCache, SpillKeepsPriorEdgesAndClasses) {
-  const SpillDir spill;
+  const test::TempDir spill;
   const std::string& dir = spill.path();
   PixelState with_edges = Filled(16, 8, 1.0f);
   with_edges.edges.assign(with_edges.depth.size(), 0);

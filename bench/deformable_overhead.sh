@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # What deformable patch matching costs over the conventional core on one
 # workspace: runs the default options and `--MspStereo.deformable false`,
-# each on a fresh copy, and prints wall and user CPU seconds of every run and
-# the ratio of each pair. On a shared machine the speed drifts between runs by
-# more than the margin being measured: compare the ratios of pairs, never
-# times across pairs.
+# each on a fresh copy, and prints wall and user CPU seconds of every run, the
+# ratio of each pair and the median of the ratios. On a shared machine the
+# speed drifts between runs by more than the margin being measured: compare
+# the ratios of pairs, never times across pairs, and quote the median.
 #
 #   bench/deformable_overhead.sh [--concurrent] <workspace> [pairs] [msp_stereo options...]
 #
@@ -13,6 +13,9 @@
 # the same machine: a drift then slows both alike and leaves the ratio. When
 # the first of the two ends, a filler run takes its core until the other ends,
 # so that neither finishes alone on a quieter machine (which would flatter it).
+# The default run has proved the more sensitive to what runs beside it (its
+# time spread 20 % over six such pairs, the conventional run's 4 %), so pairs
+# one after the other are the fairer measure of what a user sees.
 #
 # <workspace> is a dense workspace such as msp_make_scene writes; it is not
 # modified (its stereo/depth_maps and normal_maps are left out of the copies).

@@ -83,7 +83,8 @@ struct DeformableBuffers {
 // sweeps those pixels use the deformable update, the others the conventional.
 // When `prior_anchors` is given it receives, in pixel order, every unreliable
 // pixel with anchors in the first iteration: the anchors and their
-// camera-frame points on that snapshot (the input of eq. 4).
+// camera-frame points on that snapshot (the input of eq. 4). `buffers` is
+// the working memory, kept by the caller across calls (DeformableBuffers).
 DeformableStats RunDeformableCheckerboardIterations(
     const core::PassParams& params, const ReliabilityMaps& maps, const DeformableSettings& settings,
     int num_iterations, int num_threads, DeformableBuffers* buffers,

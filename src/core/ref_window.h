@@ -36,6 +36,9 @@ struct RefWindow {
   int clipped;      // the window crosses the reference border: only its samples inside remain
   int textured;     // reference variance reaches kMinNccVariance
   float spread;     // sum of squared deviations of the raw reference values
+  // The box holding every sample and the centre: x0, x1, y0, y1. A warp
+  // that keeps it inside the source keeps every sample there.
+  float box[4];
   // Sample positions and normalised reference values; lanes from num_samples
   // up to the next multiple of kWindowLanes repeat the centre with value 0.
   float x[kMaxFastWindowSamples];
@@ -87,6 +90,14 @@ MSP_HD void PrepareRefWindow(const ImageView& ref, int col, int row, int radius,
     w->y[k] = static_cast<float>(row);
     w->value[k] = 0.0f;
   }
+  w->box[0] = w->box[1] = static_cast<float>(col);
+  w->box[2] = w->box[3] = static_cast<float>(row);
+  for (int k = 0; k < n; ++k) {
+    w->box[0] = fminf(w->box[0], w->x[k]);
+    w->box[1] = fmaxf(w->box[1], w->x[k]);
+    w->box[2] = fminf(w->box[2], w->y[k]);
+    w->box[3] = fmaxf(w->box[3], w->y[k]);
+  }
 }
 
 // Source sums over window w warped by H.
@@ -113,13 +124,22 @@ MSP_HD bool WindowSumsScalar(const RefWindow& w, const ImageView& src, const Mat
 
 #if defined(MSP_WINDOW_SUMS_AVX2)
 // WindowSumsScalar, eight samples at a time; padding lanes are masked out.
+// When the warp keeps the window's box inside the source, no sample needs
+// its own test.
 inline bool WindowSumsAvx2(const RefWindow& w, const ImageView& src, const Mat3& H,
                            SourceSums* out) {
   const WarpLanes lanes = MakeWarpLanes(H, src);
+  const bool whole = WholeBox(lanes, w.box[0], w.box[1], w.box[2], w.box[3]);
   __m256 sum_s = _mm256_setzero_ps(), sum_ss = _mm256_setzero_ps(), sum_rs = _mm256_setzero_ps();
   for (int k = 0; k < w.num_samples; k += kWindowLanes) {
-    const WarpedCells cells = WarpCells(lanes, _mm256_loadu_ps(w.x + k), _mm256_loadu_ps(w.y + k));
-    if (_mm256_movemask_ps(cells.inside) != 0xFF) return false;
+    const __m256 x = _mm256_loadu_ps(w.x + k), y = _mm256_loadu_ps(w.y + k);
+    WarpedCells cells;
+    if (whole) {
+      cells = WarpCellsInside(lanes, x, y);
+    } else {
+      cells = WarpCells(lanes, x, y);
+      if (_mm256_movemask_ps(cells.inside) != 0xFF) return false;
+    }
     const __m256 s = _mm256_and_ps(LoadBilinear(src, cells), FirstLanes(w.num_samples - k));
     sum_s = _mm256_add_ps(sum_s, s);
     sum_ss = _mm256_fmadd_ps(s, s, sum_ss);

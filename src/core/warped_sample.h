@@ -71,27 +71,90 @@ struct WarpedCells {
   __m256 inside;
 };
 
-inline WarpedCells WarpCells(const WarpLanes& w, __m256 x, __m256 y) {
-  const __m256 zero = _mm256_setzero_ps();
+// Eight positions mapped into the source: (u, v) and the divisor hw, whose
+// sign says whether the point lies in front of the source camera.
+struct WarpedPoints {
+  __m256 u, v, hw;
+};
+
+inline WarpedPoints WarpPoints(const WarpLanes& w, __m256 x, __m256 y) {
   const __m256 hw = _mm256_fmadd_ps(w.h[6], x, _mm256_fmadd_ps(w.h[7], y, w.h[8]));
   const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), hw);
   const __m256 u =
       _mm256_mul_ps(_mm256_fmadd_ps(w.h[0], x, _mm256_fmadd_ps(w.h[1], y, w.h[2])), inv);
   const __m256 v =
       _mm256_mul_ps(_mm256_fmadd_ps(w.h[3], x, _mm256_fmadd_ps(w.h[4], y, w.h[5])), inv);
-  // Ordered compares are false for NaN, so a degenerate warp fails too.
+  return WarpedPoints{u, v, hw};
+}
+
+// Lanes whose bilinear support lies in the source with `margin` pixels to
+// spare on every side, in front of the camera. Ordered compares are false for
+// NaN, so a degenerate warp fails too.
+inline __m256 SupportInside(const WarpLanes& w, const WarpedPoints& p, __m256 margin) {
+  return _mm256_and_ps(
+      _mm256_and_ps(_mm256_cmp_ps(p.hw, _mm256_setzero_ps(), _CMP_GT_OQ),
+                    _mm256_cmp_ps(p.u, margin, _CMP_GE_OQ)),
+      _mm256_and_ps(_mm256_and_ps(_mm256_cmp_ps(p.v, margin, _CMP_GE_OQ),
+                                  _mm256_cmp_ps(p.u, _mm256_sub_ps(w.max_u, margin), _CMP_LT_OQ)),
+                    _mm256_cmp_ps(p.v, _mm256_sub_ps(w.max_v, margin), _CMP_LT_OQ)));
+}
+
+// The cells of positions (u, v) inside the source.
+inline WarpedCells CellsAt(const WarpLanes& w, __m256 u, __m256 v) {
+  const __m256i c0 = _mm256_cvttps_epi32(u), r0 = _mm256_cvttps_epi32(v);
   WarpedCells c;
-  c.inside = _mm256_and_ps(
-      _mm256_and_ps(_mm256_cmp_ps(hw, zero, _CMP_GT_OQ), _mm256_cmp_ps(u, zero, _CMP_GE_OQ)),
-      _mm256_and_ps(
-          _mm256_and_ps(_mm256_cmp_ps(v, zero, _CMP_GE_OQ), _mm256_cmp_ps(u, w.max_u, _CMP_LT_OQ)),
-          _mm256_cmp_ps(v, w.max_v, _CMP_LT_OQ)));
-  const __m256 u_in = _mm256_and_ps(u, c.inside), v_in = _mm256_and_ps(v, c.inside);
-  const __m256i c0 = _mm256_cvttps_epi32(u_in), r0 = _mm256_cvttps_epi32(v_in);
-  c.fx = _mm256_sub_ps(u_in, _mm256_cvtepi32_ps(c0));
-  c.fy = _mm256_sub_ps(v_in, _mm256_cvtepi32_ps(r0));
+  c.fx = _mm256_sub_ps(u, _mm256_cvtepi32_ps(c0));
+  c.fy = _mm256_sub_ps(v, _mm256_cvtepi32_ps(r0));
   c.index = _mm256_add_epi32(_mm256_mullo_epi32(r0, w.pitch), c0);
+  c.inside = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
   return c;
+}
+
+inline WarpedCells WarpCells(const WarpLanes& w, __m256 x, __m256 y) {
+  const WarpedPoints p = WarpPoints(w, x, y);
+  const __m256 inside = SupportInside(w, p, _mm256_setzero_ps());
+  WarpedCells c = CellsAt(w, _mm256_and_ps(p.u, inside), _mm256_and_ps(p.v, inside));
+  c.inside = inside;
+  return c;
+}
+
+// WarpCells of positions already known to have their support in the source
+// (WholeBoxLanes): no test, every lane inside.
+inline WarpedCells WarpCellsInside(const WarpLanes& w, __m256 x, __m256 y) {
+  const WarpedPoints p = WarpPoints(w, x, y);
+  return CellsAt(w, p.u, p.v);
+}
+
+// How far inside the source bounds the warped corners of a box must stay for
+// WholeBoxLanes to vouch for the positions within it: far above the warp's
+// rounding (about 1e-3 pixels), so a position inside the box that the exact
+// warp puts inside is put inside by the float warp too.
+constexpr float kWholeBoxMargin = 1.0f / 16.0f;
+
+// The lanes under whose warp every position of the box [x0, x1] x [y0, y1]
+// has its bilinear support in the source, by its four corners. Where the
+// divisor is positive at the corners it is positive over the box (it is
+// affine), and the homography then maps the box onto the convex
+// quadrilateral of the corners' images, which lies in the (convex) bounds
+// when they do.
+inline uint32_t WholeBoxLanes(const WarpLanes& w, float x0, float x1, float y0, float y1) {
+  const __m256 margin = _mm256_set1_ps(kWholeBoxMargin);
+  __m256 whole = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
+  const float xs[4] = {x0, x1, x0, x1}, ys[4] = {y0, y0, y1, y1};
+  for (int k = 0; k < 4; ++k) {
+    const WarpedPoints p = WarpPoints(w, _mm256_set1_ps(xs[k]), _mm256_set1_ps(ys[k]));
+    whole = _mm256_and_ps(whole, SupportInside(w, p, margin));
+  }
+  return static_cast<uint32_t>(_mm256_movemask_ps(whole));
+}
+
+// True when, under the warp broadcast in every lane, every position of the
+// box has its support in the source: WholeBoxLanes with the four corners in
+// the lanes of one warp.
+inline bool WholeBox(const WarpLanes& w, float x0, float x1, float y0, float y1) {
+  const WarpedPoints p = WarpPoints(w, _mm256_setr_ps(x0, x1, x0, x1, x0, x1, x0, x1),
+                                    _mm256_setr_ps(y0, y0, y1, y1, y0, y0, y1, y1));
+  return _mm256_movemask_ps(SupportInside(w, p, _mm256_set1_ps(kWholeBoxMargin))) == 0xFF;
 }
 
 inline __m256 Bilinear(const WarpedCells& c, __m256 p00, __m256 p01, __m256 p10, __m256 p11) {

@@ -38,17 +38,43 @@ inline void WindowNccCostsAvx2(const RefWindow& w, const ImageView& ref, const I
     WindowNccCostsScalar(w, ref, src, H, lanes, p, costs);
     return;
   }
-  // Lane l of h[i] is H[l].m[i]; unused lanes get 0, which no sample passes.
+  if (lanes == 0u) {
+    for (int l = 0; l < kWindowLanes; ++l) costs[l] = kMaxCost;
+    return;
+  }
+  // Lane l of h[i] is H[l].m[i]; unused lanes repeat the first used lane's
+  // homography, so that their loads stay in bounds with or without tests.
   alignas(32) float columns[9][kWindowLanes];
+  const int first = __builtin_ctz(lanes);
   for (int l = 0; l < kWindowLanes; ++l) {
-    const bool used = (lanes >> l) & 1u;
-    for (int i = 0; i < 9; ++i) columns[i][l] = used ? H[l].m[i] : 0.0f;
+    const Mat3& h = ((lanes >> l) & 1u) ? H[l] : H[first];
+    for (int i = 0; i < 9; ++i) columns[i][l] = h.m[i];
   }
   WarpLanes warp;
   for (int i = 0; i < 9; ++i) warp.h[i] = _mm256_load_ps(columns[i]);
   warp.max_u = _mm256_set1_ps(src.width - 1.0f);
   warp.max_v = _mm256_set1_ps(src.height - 1.0f);
   warp.pitch = _mm256_set1_epi32(src.pitch);
+  // Most often every lane keeps the window's box inside the source: the
+  // samples then need no tests, and the costs no reference sums or counts.
+  if ((WholeBoxLanes(warp, w.box[0], w.box[1], w.box[2], w.box[3]) & lanes) == lanes) {
+    __m256 sum_s = _mm256_setzero_ps(), sum_ss = _mm256_setzero_ps();
+    __m256 sum_rs = _mm256_setzero_ps();
+    for (int k = 0; k < w.num_samples; ++k) {
+      const __m256 s =
+          LoadBilinear(src, WarpCellsInside(warp, _mm256_set1_ps(w.x[k]), _mm256_set1_ps(w.y[k])));
+      sum_s = _mm256_add_ps(sum_s, s);
+      sum_ss = _mm256_fmadd_ps(s, s, sum_ss);
+      sum_rs = _mm256_fmadd_ps(_mm256_set1_ps(w.value[k]), s, sum_rs);
+    }
+    const __m256 cost = w.textured ? NccFromSourceSumLanes(sum_s, sum_ss, sum_rs, w.num_samples)
+                                   : _mm256_set1_ps(kMaxCost);
+    _mm256_storeu_ps(costs, cost);
+    for (int l = 0; l < kWindowLanes; ++l) {
+      if (!((lanes >> l) & 1u)) costs[l] = kMaxCost;
+    }
+    return;
+  }
   // The reference sums and the count serve the lanes that lose samples.
   MaskedSumLanes sums = ZeroMaskedSums();
   __m256 whole = _mm256_castsi256_ps(_mm256_set1_epi32(-1));

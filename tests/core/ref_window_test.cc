@@ -199,6 +199,87 @@ TEST(RefWindow, BatchOfWarpsCostsWhatEachWarpCostsAlone) {
   for (int l = 0; l < kWindowLanes; ++l) EXPECT_EQ(costs[l], kMaxCost);
 }
 
+// Lanes whose warps all keep the window inside the source (the batch's
+// shortcut), and such warps among others, cost what each costs alone.
+TEST(RefWindow, BatchOfWholeWarpsCostsWhatEachWarpCostsAlone) {
+  const std::vector<float> ref = Noise(13);
+  const std::vector<float> src = Noise(14);
+  Mat3 H[kWindowLanes];
+  for (int l = 0; l < kWindowLanes; ++l) H[l] = Warp(0.37f * l - 1.2f, 0.9f - 0.23f * l);
+  for (const uint32_t lanes : {0xffu, 0x5au, 0x80u}) {
+    for (int row = 0; row < kH; ++row) {
+      for (int col = 0; col < kW; ++col) {
+        RefWindow w;
+        PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
+        float costs[kWindowLanes];
+        WindowNccCosts(w, View(ref), View(src), H, lanes, kUniform, costs);
+        for (int l = 0; l < kWindowLanes; ++l) {
+          const float alone = ((lanes >> l) & 1u)
+                                  ? WindowNccCost(w, View(ref), View(src), H[l], kUniform)
+                                  : kMaxCost;
+          EXPECT_NEAR(costs[l], alone, 2e-4f) << col << "," << row << " lane " << l;
+        }
+      }
+    }
+  }
+}
+
+TEST(RefWindow, BoxHoldsTheSamplesAndTheCentre) {
+  const std::vector<float> img = Noise(3);
+  RefWindow w;
+  PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
+  EXPECT_EQ(w.box[0], 15.0f);
+  EXPECT_EQ(w.box[1], 25.0f);
+  EXPECT_EQ(w.box[2], 10.0f);
+  EXPECT_EQ(w.box[3], 20.0f);
+  // The corner window's samples are columns and rows 1, 3, 5; its centre is (0, 0).
+  PrepareRefWindow(View(img), 0, 0, 5, 2, 0, &w);
+  EXPECT_EQ(w.box[0], 0.0f);
+  EXPECT_EQ(w.box[1], 5.0f);
+  EXPECT_EQ(w.box[2], 0.0f);
+  EXPECT_EQ(w.box[3], 5.0f);
+}
+
+#if defined(MSP_WINDOW_SUMS_AVX2)
+// WholeBoxLanes vouches for a lane only when every position of the box has
+// its support in the source, and does vouch for boxes well inside.
+TEST(RefWindow, WholeBoxLanesVouchOnlyForBoxesInside) {
+  const ImageView src{nullptr, kW, kH, kW};
+  int vouched = 0, refused = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    alignas(32) float columns[9][kWindowLanes];
+    for (int l = 0; l < kWindowLanes; ++l) {
+      const uint64_t key = Mix64(1000u + trial * kWindowLanes + l);
+      const float shift_x = 50.0f * RandomUniform(key, 0) - 25.0f;
+      const float shift_y = 40.0f * RandomUniform(key, 1) - 20.0f;
+      Mat3 h = Warp(shift_x, shift_y);
+      h.m[6] = 0.04f * RandomUniform(key, 2) - 0.02f;  // strongly projective, at times behind
+      h.m[7] = 0.04f * RandomUniform(key, 3) - 0.02f;
+      for (int i = 0; i < 9; ++i) columns[i][l] = h.m[i];
+    }
+    WarpLanes warp;
+    for (int i = 0; i < 9; ++i) warp.h[i] = _mm256_load_ps(columns[i]);
+    warp.max_u = _mm256_set1_ps(kW - 1.0f);
+    warp.max_v = _mm256_set1_ps(kH - 1.0f);
+    warp.pitch = _mm256_set1_epi32(kW);
+    const float x0 = 3.0f + trial % 20, y0 = 2.0f + trial % 15;
+    const uint32_t whole = WholeBoxLanes(warp, x0, x0 + 10.0f, y0, y0 + 10.0f);
+    uint32_t inside = 0xffu;
+    for (float y = y0; y <= y0 + 10.0f; y += 0.5f) {
+      for (float x = x0; x <= x0 + 10.0f; x += 0.5f) {
+        const WarpedCells c = WarpCells(warp, _mm256_set1_ps(x), _mm256_set1_ps(y));
+        inside &= static_cast<uint32_t>(_mm256_movemask_ps(c.inside));
+      }
+    }
+    EXPECT_EQ(whole & ~inside, 0u) << "trial " << trial;
+    vouched += __builtin_popcount(whole);
+    refused += __builtin_popcount(inside & ~whole);
+  }
+  EXPECT_GT(vouched, 400);
+  EXPECT_LT(refused, vouched / 10);  // only boxes within the margin of the bounds
+}
+#endif
+
 TEST(RefWindow, PartialWindowNeedsItsCentreAndHalfTheSamples) {
   const std::vector<float> img = Noise(3);
   RefWindow w;

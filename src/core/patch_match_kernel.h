@@ -222,14 +222,42 @@ MSP_HD uint32_t PreparePlanes(const PassParams& p, const RefWindow& w, const Pla
   return lanes;
 }
 
+// GeometricTerms in every view of the prepared planes in `lanes` (up to
+// kWindowLanes), geometric[k][j]; with a vector path, one view at a time for
+// all of them at once.
+MSP_HD void CandidateGeometricTerms(const PassParams& p, int col, int row,
+                                    const PreparedPlane* planes, uint32_t lanes, int num,
+                                    float (*geometric)[kMaxSourceViews]) {
+#if defined(MSP_WINDOW_SUMS_AVX2)
+  if (p.geometric) {
+    alignas(32) float depth[kWindowLanes];
+    for (int k = 0; k < kWindowLanes; ++k) {
+      depth[k] = (k < num && ((lanes >> k) & 1u)) ? planes[k].depth : 1.0f;
+    }
+    for (int j = 0; j < p.num_src; ++j) {
+      const SourceView& s = p.src[j];
+      alignas(32) float error[kWindowLanes] = {};
+      if (s.depth.data != nullptr) {
+        _mm256_store_ps(error,
+                        ComposedReprojectionErrorLanes(s.rel, s.camera, s.depth, col, row,
+                                                       _mm256_load_ps(depth), p.geom_max_error));
+      }
+      for (int k = 0; k < num; ++k) geometric[k][j] = p.geom_lambda * error[k];
+    }
+    return;
+  }
+#endif
+  for (int k = 0; k < num; ++k) {
+    if ((lanes >> k) & 1u) GeometricTerms(p, col, row, planes[k], nullptr, geometric[k]);
+  }
+}
+
 // PreparePlanes, and the geometric terms of the valid planes in every view.
 MSP_HD uint32_t PrepareCandidates(const PassParams& p, const RefWindow& w, const PlaneHypothesis* h,
                                   const bool* has, int num, PreparedPlane* planes,
                                   float (*geometric)[kMaxSourceViews]) {
   const uint32_t lanes = PreparePlanes(p, w, h, has, num, planes);
-  for (int k = 0; k < num; ++k) {
-    if ((lanes >> k) & 1u) GeometricTerms(p, w.col, w.row, planes[k], nullptr, geometric[k]);
-  }
+  CandidateGeometricTerms(p, w.col, w.row, planes, lanes, num, geometric);
   return lanes;
 }
 

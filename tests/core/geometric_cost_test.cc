@@ -81,6 +81,40 @@ TEST(GeometricCost, ComposedMapsGiveTheSameError) {
   EXPECT_GT(small, 50);
 }
 
+#if defined(MSP_WINDOW_SUMS_AVX2)
+// Eight depths at once, lane by lane the error of the scalar form: on and off
+// the map, clamped, at another resolution, and in front of and behind the
+// source camera.
+TEST(GeometricCost, LanesGiveTheScalarError) {
+  const Camera ref = Reference(), src = Source();
+  const RelativePose rel = ComputeRelativePose(ref, src);
+  const std::vector<float> depth = SourcePlaneDepth(src);
+  std::vector<float> holed = depth;
+  for (size_t i = 0; i < holed.size(); i += 3) holed[i] = 0.0f;  // no depth there
+  const ImageView full{holed.data(), src.width, src.height, src.width};
+  const ImageView coarse{depth.data(), src.width / 2, src.height / 2, src.width};
+  const float depths[8] = {-1.0f, 2.0f, 2.9f, 3.0f, 3.05f, 3.4f, 5.0f, 40.0f};
+  int clamped = 0, small = 0;
+  for (const ImageView& view : {full, coarse}) {
+    for (int row = 3; row < ref.height; row += 17) {
+      for (int col = 1; col < ref.width; col += 13) {
+        alignas(32) float lanes[8];
+        _mm256_store_ps(lanes, ComposedReprojectionErrorLanes(rel, src, view, col, row,
+                                                              _mm256_loadu_ps(depths), 3.0f));
+        for (int k = 0; k < 8; ++k) {
+          const float scalar = ComposedReprojectionError(rel, src, view, col, row, depths[k], 3.0f);
+          ASSERT_NEAR(lanes[k], scalar, 1e-3f) << col << "," << row << " depth " << depths[k];
+          clamped += scalar == 3.0f;
+          small += scalar < 0.5f;
+        }
+      }
+    }
+  }
+  EXPECT_GT(clamped, 50);  // both outcomes were exercised
+  EXPECT_GT(small, 50);
+}
+#endif
+
 }  // namespace
 }  // namespace core
 }  // namespace msp

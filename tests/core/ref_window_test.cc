@@ -158,6 +158,18 @@ TEST(RefWindow, BorderWindowCostEqualsTheGeneralNcc) {
   EXPECT_EQ(WindowNccCost(corner, View(ref), View(src), half_left_up, kUniform), kMaxCost);
 }
 
+// The batch's costs of the window at (col, row) under the warps H in
+// `lanes`, and each warp's cost alone (kMaxCost outside `lanes`).
+void BatchAndAlone(const std::vector<float>& ref, const std::vector<float>& src, const Mat3* H,
+                   uint32_t lanes, int col, int row, RefWindow* w, float* batch, float* alone) {
+  PrepareRefWindow(View(ref), col, row, 5, 2, 0, w);
+  WindowNccCosts(*w, View(ref), View(src), H, lanes, kUniform, batch);
+  for (int l = 0; l < kWindowLanes; ++l) {
+    alone[l] =
+        ((lanes >> l) & 1u) ? WindowNccCost(*w, View(ref), View(src), H[l], kUniform) : kMaxCost;
+  }
+}
+
 // Eight warps at once, lane by lane the same cost as WindowNccCost alone:
 // windows inside the source, leaving it in part, leaving it whole, over the
 // reference border, and a lane left unused.
@@ -172,12 +184,10 @@ TEST(RefWindow, BatchOfWarpsCostsWhatEachWarpCostsAlone) {
   for (int row = 0; row < kH; ++row) {
     for (int col = 0; col < kW; ++col) {
       RefWindow w;
-      PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
-      float costs[kWindowLanes];
-      WindowNccCosts(w, View(ref), View(src), H, lanes, kUniform, costs);
+      float costs[kWindowLanes], alone[kWindowLanes];
+      BatchAndAlone(ref, src, H, lanes, col, row, &w, costs, alone);
       for (int l = 0; l < 7; ++l) {
-        EXPECT_NEAR(costs[l], WindowNccCost(w, View(ref), View(src), H[l], kUniform), 2e-4f)
-            << col << "," << row << " lane " << l;
+        EXPECT_NEAR(costs[l], alone[l], 2e-4f) << col << "," << row << " lane " << l;
         SourceSums sums;
         partial += !WindowSumsScalar(w, View(src), H[l], &sums) &&
                    CentreInSource(H[l], View(src), col, row) && costs[l] < kMaxCost;
@@ -210,14 +220,10 @@ TEST(RefWindow, BatchOfWholeWarpsCostsWhatEachWarpCostsAlone) {
     for (int row = 0; row < kH; ++row) {
       for (int col = 0; col < kW; ++col) {
         RefWindow w;
-        PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
-        float costs[kWindowLanes];
-        WindowNccCosts(w, View(ref), View(src), H, lanes, kUniform, costs);
+        float costs[kWindowLanes], alone[kWindowLanes];
+        BatchAndAlone(ref, src, H, lanes, col, row, &w, costs, alone);
         for (int l = 0; l < kWindowLanes; ++l) {
-          const float alone = ((lanes >> l) & 1u)
-                                  ? WindowNccCost(w, View(ref), View(src), H[l], kUniform)
-                                  : kMaxCost;
-          EXPECT_NEAR(costs[l], alone, 2e-4f) << col << "," << row << " lane " << l;
+          EXPECT_NEAR(costs[l], alone[l], 2e-4f) << col << "," << row << " lane " << l;
         }
       }
     }

@@ -62,6 +62,24 @@ inline WarpLanes MakeWarpLanes(const Mat3& H, const ImageView& src) {
   return w;
 }
 
+// The homographies H[l] of the lanes set in `lanes` (not 0), one per lane;
+// unused lanes repeat the first used lane's, so that their loads stay in
+// bounds with or without tests.
+inline WarpLanes MakeLaneWarps(const Mat3* H, uint32_t lanes, const ImageView& src) {
+  alignas(32) float columns[9][8];  // lane l of h[i] is H[l].m[i]
+  const int first = __builtin_ctz(lanes);
+  for (int l = 0; l < 8; ++l) {
+    const Mat3& h = ((lanes >> l) & 1u) ? H[l] : H[first];
+    for (int i = 0; i < 9; ++i) columns[i][l] = h.m[i];
+  }
+  WarpLanes w;
+  for (int i = 0; i < 9; ++i) w.h[i] = _mm256_load_ps(columns[i]);
+  w.max_u = _mm256_set1_ps(src.width - 1.0f);
+  w.max_v = _mm256_set1_ps(src.height - 1.0f);
+  w.pitch = _mm256_set1_epi32(src.pitch);
+  return w;
+}
+
 // Eight warped positions: the bilinear cell (index of its top-left pixel,
 // fractions fx, fy) and the mask of lanes whose support lies in the source.
 // Lanes outside get index 0 and fractions 0, so their loads stay in bounds.

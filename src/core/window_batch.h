@@ -32,6 +32,13 @@ MSP_HD void WindowNccCostsScalar(const RefWindow& w, const ImageView& ref, const
 }
 
 #if defined(MSP_WINDOW_SUMS_AVX2)
+// Lanes outside `lanes` cost kMaxCost.
+inline void ClearUnusedLanes(uint32_t lanes, float* costs) {
+  for (int l = 0; l < kWindowLanes; ++l) {
+    if (!((lanes >> l) & 1u)) costs[l] = kMaxCost;
+  }
+}
+
 inline void WindowNccCostsAvx2(const RefWindow& w, const ImageView& ref, const ImageView& src,
                                const Mat3* H, uint32_t lanes, const NccParams& p, float* costs) {
   if (w.num_samples == 0) {
@@ -42,19 +49,7 @@ inline void WindowNccCostsAvx2(const RefWindow& w, const ImageView& ref, const I
     for (int l = 0; l < kWindowLanes; ++l) costs[l] = kMaxCost;
     return;
   }
-  // Lane l of h[i] is H[l].m[i]; unused lanes repeat the first used lane's
-  // homography, so that their loads stay in bounds with or without tests.
-  alignas(32) float columns[9][kWindowLanes];
-  const int first = __builtin_ctz(lanes);
-  for (int l = 0; l < kWindowLanes; ++l) {
-    const Mat3& h = ((lanes >> l) & 1u) ? H[l] : H[first];
-    for (int i = 0; i < 9; ++i) columns[i][l] = h.m[i];
-  }
-  WarpLanes warp;
-  for (int i = 0; i < 9; ++i) warp.h[i] = _mm256_load_ps(columns[i]);
-  warp.max_u = _mm256_set1_ps(src.width - 1.0f);
-  warp.max_v = _mm256_set1_ps(src.height - 1.0f);
-  warp.pitch = _mm256_set1_epi32(src.pitch);
+  const WarpLanes warp = MakeLaneWarps(H, lanes, src);
   // Most often every lane keeps the window's box inside the source: the
   // samples then need no tests, and the costs no reference sums or counts.
   if ((WholeBoxLanes(warp, w.box[0], w.box[1], w.box[2], w.box[3]) & lanes) == lanes) {
@@ -70,9 +65,7 @@ inline void WindowNccCostsAvx2(const RefWindow& w, const ImageView& ref, const I
     const __m256 cost = w.textured ? NccFromSourceSumLanes(sum_s, sum_ss, sum_rs, w.num_samples)
                                    : _mm256_set1_ps(kMaxCost);
     _mm256_storeu_ps(costs, cost);
-    for (int l = 0; l < kWindowLanes; ++l) {
-      if (!((lanes >> l) & 1u)) costs[l] = kMaxCost;
-    }
+    ClearUnusedLanes(lanes, costs);
     return;
   }
   // The reference sums and the count serve the lanes that lose samples.
@@ -88,9 +81,7 @@ inline void WindowNccCostsAvx2(const RefWindow& w, const ImageView& ref, const I
   _mm256_storeu_ps(costs, cost);
   const uint32_t whole_lanes = static_cast<uint32_t>(_mm256_movemask_ps(whole));
   if ((whole_lanes & lanes) == lanes && !w.clipped) {
-    for (int l = 0; l < kWindowLanes; ++l) {
-      if (!((lanes >> l) & 1u)) costs[l] = kMaxCost;
-    }
+    ClearUnusedLanes(lanes, costs);
     return;
   }
   alignas(32) float s[kWindowLanes], ss[kWindowLanes], rs[kWindowLanes], r[kWindowLanes],

@@ -253,21 +253,16 @@ TEST(RefWindow, WholeBoxLanesVouchOnlyForBoxesInside) {
   const ImageView src{nullptr, kW, kH, kW};
   int vouched = 0, refused = 0;
   for (int trial = 0; trial < 400; ++trial) {
-    alignas(32) float columns[9][kWindowLanes];
+    Mat3 H[kWindowLanes];
     for (int l = 0; l < kWindowLanes; ++l) {
       const uint64_t key = Mix64(1000u + trial * kWindowLanes + l);
       const float shift_x = 50.0f * RandomUniform(key, 0) - 25.0f;
       const float shift_y = 40.0f * RandomUniform(key, 1) - 20.0f;
-      Mat3 h = Warp(shift_x, shift_y);
-      h.m[6] = 0.04f * RandomUniform(key, 2) - 0.02f;  // strongly projective, at times behind
-      h.m[7] = 0.04f * RandomUniform(key, 3) - 0.02f;
-      for (int i = 0; i < 9; ++i) columns[i][l] = h.m[i];
+      H[l] = Warp(shift_x, shift_y);
+      H[l].m[6] = 0.04f * RandomUniform(key, 2) - 0.02f;  // strongly projective, at times behind
+      H[l].m[7] = 0.04f * RandomUniform(key, 3) - 0.02f;
     }
-    WarpLanes warp;
-    for (int i = 0; i < 9; ++i) warp.h[i] = _mm256_load_ps(columns[i]);
-    warp.max_u = _mm256_set1_ps(kW - 1.0f);
-    warp.max_v = _mm256_set1_ps(kH - 1.0f);
-    warp.pitch = _mm256_set1_epi32(kW);
+    const WarpLanes warp = MakeLaneWarps(H, 0xffu, src);
     const float x0 = 3.0f + trial % 20, y0 = 2.0f + trial % 15;
     const uint32_t whole = WholeBoxLanes(warp, x0, x0 + 10.0f, y0, y0 + 10.0f);
     uint32_t inside = 0xffu;

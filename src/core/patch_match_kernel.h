@@ -425,7 +425,7 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
   constexpr int kRows = kNumPropagationCandidates + 1;  // + the current plane
   PlaneHypothesis cand[kRows];
   bool has[kRows];
-  float costs[kRows * kMaxSourceViews];
+  float costs[kNumPropagationCandidates * kMaxSourceViews];
   for (int k = 0; k < kNumPropagationCandidates; ++k) {
     has[k] = RegionCandidate(p, col, row, k, &cand[k]);
   }
@@ -440,19 +440,24 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
   float weights[kMaxSourceViews];
   const uint32_t mask = SelectViews(costs, kNumPropagationCandidates, p.num_src, kMaxSourceViews,
                                     iteration, s.mask[i], p.num_samples, &select_rng, weights);
-  // The current plane only competes: its selected views suffice.
-  if (has[kNumPropagationCandidates]) {
-    ViewCosts(p, w, cand[kNumPropagationCandidates], weights,
-              costs + kNumPropagationCandidates * kMaxSourceViews);
-  }
   int best = -1;
   float best_cost = 1e30f;
-  for (int k = 0; k < kRows; ++k) {
+  for (int k = 0; k < kNumPropagationCandidates; ++k) {
     if (!has[k]) continue;
     const float c = AggregateCost(costs + k * kMaxSourceViews, weights, p.num_src);
     if (c < best_cost) {
       best_cost = c;
       best = k;
+    }
+  }
+  // The current plane only competes, last (ties keep the candidate): its
+  // selected views suffice, and only until it is known to lose.
+  if (has[kNumPropagationCandidates]) {
+    const float c =
+        AggregateViewCostBelow(p, w, cand[kNumPropagationCandidates], weights, best_cost);
+    if (c < best_cost) {
+      best_cost = c;
+      best = kNumPropagationCandidates;
     }
   }
   PlaneHypothesis cur;
@@ -471,9 +476,9 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
   for (int k = 0; k < kNumRefinementCandidates; ++k) {
     const PlaneHypothesis h = RefinementCandidate(p, col, row, cur, k, &refine_rng);
     if (!DepthInRange(p, h.depth)) continue;
-    float c[kMaxSourceViews];
-    ViewCosts(p, w, h, weights, c);
-    const float agg = AggregateCost(c, weights, p.num_src);
+    // Most candidates lose, the random ones by far: a partial sum that
+    // reaches best_cost settles it before all the views are scored.
+    const float agg = AggregateViewCostBelow(p, w, h, weights, best_cost);
     if (agg < best_cost) {
       best_cost = agg;
       cur = h;

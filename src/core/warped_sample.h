@@ -175,6 +175,22 @@ inline bool WholeBox(const WarpLanes& w, float x0, float x1, float y0, float y1)
   return _mm256_movemask_ps(SupportInside(w, p, _mm256_set1_ps(kWholeBoxMargin))) == 0xFF;
 }
 
+// The lanes that may pass CentreInSource at reference pixel (col, row): all
+// but those whose centre lands in front of the camera yet outside the
+// source by more than kWholeBoxMargin, beyond any rounding of the warp. A
+// dropped lane fails CentreInSource, and no window of samples around the
+// centre can lie wholly inside either (the warp keeps a window's centre
+// within the convex hull of its samples' images), so by WindowNccCost's
+// rules it costs kMaxCost. A lane whose divisor is not positive at the
+// centre is dropped too: the divisor, affine, is then not positive at some
+// sample of any window around it.
+inline uint32_t CentreNearSourceLanes(const WarpLanes& w, int col, int row) {
+  const WarpedPoints p = WarpPoints(w, _mm256_set1_ps(static_cast<float>(col)),
+                                    _mm256_set1_ps(static_cast<float>(row)));
+  return static_cast<uint32_t>(
+      _mm256_movemask_ps(SupportInside(w, p, _mm256_set1_ps(-kWholeBoxMargin))));
+}
+
 inline __m256 Bilinear(const WarpedCells& c, __m256 p00, __m256 p01, __m256 p10, __m256 p11) {
   const __m256 top = _mm256_fmadd_ps(c.fx, _mm256_sub_ps(p01, p00), p00);
   const __m256 bottom = _mm256_fmadd_ps(c.fx, _mm256_sub_ps(p11, p10), p10);

@@ -49,7 +49,19 @@ inline void WindowNccCostsAvx2(const RefWindow& w, const ImageView& ref, const I
     for (int l = 0; l < kWindowLanes; ++l) costs[l] = kMaxCost;
     return;
   }
-  const WarpLanes warp = MakeLaneWarps(H, lanes, src);
+  // Lanes whose centre lands outside cost kMaxCost, whatever their samples
+  // would say: drop them first, so that they neither cost their samples nor
+  // keep the other lanes from the whole-box loop.
+  WarpLanes warp = MakeLaneWarps(H, lanes, src);
+  const uint32_t centred = lanes & CentreNearSourceLanes(warp, w.col, w.row);
+  if (centred == 0u) {
+    for (int l = 0; l < kWindowLanes; ++l) costs[l] = kMaxCost;
+    return;
+  }
+  if (centred != lanes) {
+    lanes = centred;
+    warp = MakeLaneWarps(H, lanes, src);
+  }
   // Most often every lane keeps the window's box inside the source: the
   // samples then need no tests, and the costs no reference sums or counts.
   if ((WholeBoxLanes(warp, w.box[0], w.box[1], w.box[2], w.box[3]) & lanes) == lanes) {

@@ -279,6 +279,42 @@ TEST(RefWindow, WholeBoxLanesVouchOnlyForBoxesInside) {
   EXPECT_GT(vouched, 400);
   EXPECT_LT(refused, vouched / 10);  // only boxes within the margin of the bounds
 }
+
+// CentreNearSourceLanes drops only lanes that WindowNccCost prices at
+// kMaxCost: their centre fails CentreInSource, and their window (unless
+// clipped) is not whole.
+TEST(RefWindow, CentreTestDropsOnlyLanesThatCostMax) {
+  const std::vector<float> ref = Noise(15);
+  const std::vector<float> src = Noise(16);
+  int dropped = 0, kept = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    Mat3 H[kWindowLanes];
+    for (int l = 0; l < kWindowLanes; ++l) {
+      const uint64_t key = Mix64(5000u + trial * kWindowLanes + l);
+      H[l] = Warp(70.0f * RandomUniform(key, 0) - 35.0f, 56.0f * RandomUniform(key, 1) - 28.0f);
+      H[l].m[6] = 0.04f * RandomUniform(key, 2) - 0.02f;  // strongly projective, at times behind
+      H[l].m[7] = 0.04f * RandomUniform(key, 3) - 0.02f;
+    }
+    const int col = trial % kW, row = (7 * trial) % kH;
+    RefWindow w;
+    PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
+    const uint32_t near = CentreNearSourceLanes(MakeLaneWarps(H, 0xffu, View(src)), col, row);
+    for (int l = 0; l < kWindowLanes; ++l) {
+      if ((near >> l) & 1u) {
+        ++kept;
+        continue;
+      }
+      ++dropped;
+      SourceSums sums;
+      EXPECT_FALSE(CentreInSource(H[l], View(src), col, row)) << "trial " << trial << " lane " << l;
+      // (A window clipped by the reference border may not hold its centre.)
+      if (!w.clipped) EXPECT_FALSE(WindowSumsScalar(w, View(src), H[l], &sums)) << "lane " << l;
+      EXPECT_EQ(WindowNccCost(w, View(ref), View(src), H[l], kUniform), kMaxCost);
+    }
+  }
+  EXPECT_GT(dropped, 300);
+  EXPECT_GT(kept, 300);
+}
 #endif
 
 TEST(RefWindow, PartialWindowNeedsItsCentreAndHalfTheSamples) {

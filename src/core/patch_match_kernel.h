@@ -185,12 +185,13 @@ MSP_HD float TotalWeight(const float* weights, int num_views) {
 // A limit no cost reaches: the bounded costs below are then exact.
 constexpr float kUnboundedCost = 1e30f;
 
-// AggregateCost of ViewCosts(h), or, as soon as the views scored so far put
-// it at or above `limit`, that partial figure instead: every view cost is
-// >= 0, so the partial sums only grow, and a candidate that cannot beat
-// `limit` is known to lose before all its views are scored. (The sums run
-// in AggregateCost's order but may round differently from it: compare its
-// results with each other.)
+// AggregateCost of ViewCosts(h), or, as soon as a lower bound of it reaches
+// `limit`, that bound instead: a candidate that cannot beat `limit` is known
+// to lose before all its windows are scored. The bound starts at the
+// geometric terms of all the views (in a geometric pass a far-off candidate
+// stops there, with no window scored) and adds each view's NCC cost, >= 0,
+// as it is scored. (The sums run in AggregateCost's order but may round
+// differently from it: compare its results with each other.)
 MSP_HD float AggregateViewCostBelow(const PassParams& p, const RefWindow& w,
                                     const PlaneHypothesis& h, const float* weights, float limit) {
   const float total_weight = TotalWeight(weights, p.num_src);
@@ -198,11 +199,15 @@ MSP_HD float AggregateViewCostBelow(const PassParams& p, const RefWindow& w,
   if (!plane.valid || !(total_weight > 0.0f)) return kMaxCost;
   float geometric[kMaxSourceViews];
   GeometricTerms(p, w.col, w.row, plane, weights, geometric);
+  float bound = 0.0f;
+  for (int j = 0; j < p.num_src; ++j) bound += weights[j] * geometric[j];
   float sum = 0.0f;
   for (int j = 0; j < p.num_src; ++j) {
     if (!IsWeighted(weights, j)) continue;  // adds weight 0 x kMaxCost = 0
-    sum += weights[j] * (PhotometricViewCost(p, w, j, plane) + geometric[j]);
-    if (sum / total_weight >= limit) break;
+    if (bound / total_weight >= limit) return bound / total_weight;
+    const float ncc = PhotometricViewCost(p, w, j, plane);
+    sum += weights[j] * (ncc + geometric[j]);
+    bound += weights[j] * ncc;
   }
   return sum / total_weight;
 }

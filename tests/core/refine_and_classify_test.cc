@@ -112,6 +112,41 @@ TEST(RefineAndClassify, BoundedCostStopsOnlyAtItsLimit) {
   EXPECT_GT(stopped, 100);  // the first view alone often sufficed
 }
 
+// In a geometric pass the geometric terms of all the views bound the cost
+// from below before any window is scored: a hypothesis whose mean geometric
+// term reaches the limit stops at that figure, and one below the limit
+// still gets its exact cost.
+TEST(RefineAndClassify, GeometricTermsBoundTheCostFirst) {
+  testing_scene::PlaneScene s;
+  testing_scene::MakeScene(4.0f, true, &s);
+  const std::vector<float> src_depth = SourceDepth(s);
+  s.params.geometric = 1;
+  s.params.src[0].depth = ImageView{src_depth.data(), s.src.width, s.src.height, s.src.width};
+  s.params.src[1] = s.params.src[0];
+  s.params.num_src = 2;
+  const float weights[2] = {1.0f, 0.5f};
+  int bounded_by_geometry = 0;
+  for (int row = 10; row < s.ref.height - 10; row += 9) {
+    for (int col = 10; col < s.ref.width - 10; col += 7) {
+      RefWindow w;
+      PrepareWindow(s.params, col, row, &w);
+      for (float off : {1.0f, 1.02f, 1.1f}) {
+        const PlaneHypothesis h{s.depth * off, Vec3{0.0f, 0.0f, -1.0f}};
+        float costs[kMaxSourceViews];
+        ViewCosts(s.params, w, h, weights, costs);
+        const float exact = AggregateCost(costs, weights, 2);
+        const float geometric = MeanGeometricTerm(s.params, col, row, h, weights);
+        ASSERT_NEAR(AggregateViewCostBelow(s.params, w, h, weights, exact + 0.01f), exact, 1e-6f);
+        if (geometric > 0.0f) {
+          ASSERT_NEAR(AggregateViewCostBelow(s.params, w, h, weights, geometric), geometric, 1e-6f);
+          bounded_by_geometry += geometric < exact - 1e-3f;
+        }
+      }
+    }
+  }
+  EXPECT_GT(bounded_by_geometry, 100);  // the windows' costs were never needed
+}
+
 TEST(RefineAndClassify, UnknownPixelsAreRefinedAsUsual) {
   testing_scene::PlaneScene s;
   testing_scene::MakeScene(4.0f, true, &s);

@@ -147,6 +147,38 @@ MSP_HD void DeformableViewCosts(const PassParams& p, const DeformableWindows& w,
   }
 }
 
+// AggregateCost of DeformableViewCosts(h) in the weighted views, or, as
+// soon as a lower bound of it reaches `limit`, that bound, by
+// AggregateViewCostBelow's rule (the deformable photometric costs are >= 0
+// as well). With the exact cost, *conventional receives the AggregateCost of
+// the conventional costs; it is not set otherwise.
+MSP_HD float DeformableAggregateBelow(const PassParams& p, const DeformableWindows& w,
+                                      const PlaneHypothesis& h, const DeformableParams& d,
+                                      const float* weights, float limit, float* conventional) {
+  const float total_weight = TotalWeight(weights, p.num_src);
+  const PreparedPlane plane = PreparePlane(p, w.centre.col, w.centre.row, h);
+  if (!plane.valid || !(total_weight > 0.0f)) {
+    *conventional = kMaxCost;
+    return kMaxCost;
+  }
+  float geometric[kMaxSourceViews];
+  GeometricTerms(p, w.centre.col, w.centre.row, plane, weights, geometric);
+  float bound = 0.0f;
+  for (int j = 0; j < p.num_src; ++j) bound += weights[j] * geometric[j];
+  float sum = 0.0f, sum_conventional = 0.0f;
+  for (int j = 0; j < p.num_src; ++j) {
+    if (!IsWeighted(weights, j)) continue;  // adds weight 0 x kMaxCost = 0
+    if (bound / total_weight >= limit) return bound / total_weight;
+    float centre;
+    const float photometric = DeformablePhotometricCost(p, w, j, plane, d, &centre);
+    sum += weights[j] * (photometric + geometric[j]);
+    sum_conventional += weights[j] * (centre + geometric[j]);
+    bound += weights[j] * photometric;
+  }
+  *conventional = sum_conventional / total_weight;
+  return sum / total_weight;
+}
+
 static_assert(kMaxAnchors <= kWindowLanes, "one vector lane per anchor's candidate");
 static_assert(kMaxSourceViews <= 32, "a view mask has one bit per source view");
 

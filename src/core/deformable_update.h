@@ -40,6 +40,25 @@ MSP_HD bool UsableCandidate(const PassParams& p, int col, int row, const PlaneHy
                                                            static_cast<float>(row))) < 0.0f;
 }
 
+// The plane a deformable update keeps so far: its deformable cost, which
+// candidates must beat, and its conventional cost, the one stored.
+struct Incumbent {
+  PlaneHypothesis plane;
+  float cost;
+  float conventional_cost;
+};
+
+// h replaces the incumbent when its deformable cost in the weighted views is
+// lower; its windows are scored only until it is known to lose
+// (DeformableAggregateBelow).
+MSP_HD void Compete(const PassParams& p, const DeformableWindows& w, const PlaneHypothesis& h,
+                    const DeformableParams& d, const float* weights, Incumbent* incumbent) {
+  float conventional_cost = kMaxCost;  // set whenever h wins
+  const float c =
+      DeformableAggregateBelow(p, w, h, d, weights, incumbent->cost, &conventional_cost);
+  if (c < incumbent->cost) *incumbent = Incumbent{h, c, conventional_cost};
+}
+
 // Falls back to the conventional update when no candidate is usable. The
 // anchors' candidates take their anchor windows' sums from `anchor_sums`
 // (DeformableCandidateViewCosts).
@@ -86,20 +105,9 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
   float weights[kMaxSourceViews];
   const uint32_t mask = SelectViews(costs, fit, p.num_src, kMaxSourceViews, iteration, s.mask[i],
                                     p.num_samples, &select_rng, weights);
-  // The RANSAC plane and the current plane only compete: their selected views suffice.
-  for (int k = fit; k <= current; ++k) {
-    if (has[k]) {
-      DeformableViewCosts(p, windows, cand[k], d, weights, costs + k * kMaxSourceViews,
-                          conventional + k * kMaxSourceViews);
-    } else {
-      for (int j = 0; j < p.num_src; ++j) {
-        costs[k * kMaxSourceViews + j] = conventional[k * kMaxSourceViews + j] = kMaxCost;
-      }
-    }
-  }
   int best = -1;
   float best_cost = 1e30f;
-  for (int k = 0; k < num_rows; ++k) {
+  for (int k = 0; k < fit; ++k) {
     if (!has[k]) continue;
     const float c = AggregateCost(costs + k * kMaxSourceViews, weights, p.num_src);
     if (c < best_cost) {
@@ -107,26 +115,25 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
       best = k;
     }
   }
-  PlaneHypothesis cur = cand[best];
-  float stored_cost = AggregateCost(conventional + best * kMaxSourceViews, weights, p.num_src);
+  Incumbent winner{best >= 0 ? cand[best] : cand[current], best_cost,
+                   best >= 0
+                       ? AggregateCost(conventional + best * kMaxSourceViews, weights, p.num_src)
+                       : kMaxCost};
+  // The RANSAC plane and the current plane only compete, after the anchors'
+  // candidates (ties keep the earlier row): their selected views suffice.
+  for (int k = fit; k <= current; ++k) {
+    if (has[k]) Compete(p, windows, cand[k], d, weights, &winner);
+  }
   Rng refine_rng =
       MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamRefine, pixel));
   for (int k = 0; k < kNumRefinementCandidates; ++k) {
-    const PlaneHypothesis h = RefinementCandidate(p, col, row, cur, k, &refine_rng);
-    if (!DepthInRange(p, h.depth)) continue;
-    float c[kMaxSourceViews], c_conventional[kMaxSourceViews];
-    DeformableViewCosts(p, windows, h, d, weights, c, c_conventional);
-    const float agg = AggregateCost(c, weights, p.num_src);
-    if (agg < best_cost) {
-      best_cost = agg;
-      cur = h;
-      stored_cost = AggregateCost(c_conventional, weights, p.num_src);
-    }
+    const PlaneHypothesis h = RefinementCandidate(p, col, row, winner.plane, k, &refine_rng);
+    if (DepthInRange(p, h.depth)) Compete(p, windows, h, d, weights, &winner);
   }
-  s.Set(i, cur);
+  s.Set(i, winner.plane);
   s.mask[i] = mask;
   // The conventional cost of the chosen plane: what neighbours compare against.
-  s.cost[i] = stored_cost;
+  s.cost[i] = winner.conventional_cost;
 }
 
 // The same with the anchor windows' sums computed on the spot.

@@ -105,6 +105,44 @@ TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
   EXPECT_EQ(conventional[0], kMaxCost);
 }
 
+// The bounded aggregate: exact (with the conventional aggregate) when the
+// limit is above it, otherwise a figure between the limit and the exact
+// cost; two views so that a sum can stop half way.
+TEST(DeformableCost, BoundedAggregateStopsOnlyAtItsLimit) {
+  testing_scene::PlaneScene s;
+  testing_scene::MakeScene(4.0f, true, &s);
+  s.params.src[1] = s.params.src[0];
+  s.params.num_src = 2;
+  const DeformableParams d = DefaultDeformableParams();
+  const float weights[2] = {1.0f, 0.5f};
+  int stopped = 0;
+  for (int row = 30; row < s.ref.height - 30; row += 11) {
+    for (int col = 30; col < s.ref.width - 30; col += 13) {
+      const int ring[4][2] = {{12, 0}, {0, 12}, {-12, 0}, {0, -12}};
+      DeformableWindows w;
+      PrepareDeformableWindows(s.params, col, row, AnchorsAt(ring, 4, col, row), d, &w);
+      for (float off : {1.0f, 1.05f, 1.2f}) {
+        const PlaneHypothesis h{4.0f * off, kFrontoParallel};
+        float costs[kMaxSourceViews], conventional[kMaxSourceViews];
+        DeformableViewCosts(s.params, w, h, d, weights, costs, conventional);
+        const float exact = AggregateCost(costs, weights, 2);
+        float conventional_cost = -1.0f;
+        ASSERT_NEAR(
+            DeformableAggregateBelow(s.params, w, h, d, weights, exact + 0.01f, &conventional_cost),
+            exact, 1e-6f);
+        EXPECT_NEAR(conventional_cost, AggregateCost(conventional, weights, 2), 1e-6f);
+        const float limit = 0.6f * exact;
+        const float bounded =
+            DeformableAggregateBelow(s.params, w, h, d, weights, limit, &conventional_cost);
+        ASSERT_GE(bounded, limit) << col << "," << row;
+        ASSERT_LE(bounded, exact + 1e-6f) << col << "," << row;
+        stopped += bounded < exact - 1e-6f;
+      }
+    }
+  }
+  EXPECT_GT(stopped, 20);  // the first view alone often sufficed
+}
+
 // The anchors' candidates scored together (one vector lane each) cost, row
 // by row, what DeformableViewCosts gives each alone; a row without a
 // candidate costs kMaxCost.

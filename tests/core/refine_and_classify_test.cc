@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <vector>
 
 #include "plane_scene.h"
@@ -21,6 +22,14 @@ std::vector<float> SourceDepth(const testing_scene::PlaneScene& s) {
     }
   }
   return depth;
+}
+
+// The scene in a geometric pass: the source's depth map is the truth.
+void MakeGeometricScene(testing_scene::PlaneScene* s, std::vector<float>* src_depth) {
+  testing_scene::MakeScene(4.0f, true, s);
+  *src_depth = SourceDepth(*s);
+  s->params.geometric = 1;
+  s->params.src[0].depth = ImageView{src_depth->data(), s->src.width, s->src.height, s->src.width};
 }
 
 // Off the true depth by up to 9 % (a few pixels of disparity), pixel by
@@ -70,14 +79,35 @@ TEST(RefineAndClassify, PhotometricMatchesTheSeparateSteps) {
 
 TEST(RefineAndClassify, GeometricMatchesTheSeparateSteps) {
   testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
-  const std::vector<float> src_depth = SourceDepth(s);
-  s.params.geometric = 1;
-  s.params.src[0].depth = ImageView{src_depth.data(), s.src.width, s.src.height, s.src.width};
+  std::vector<float> src_depth;
+  MakeGeometricScene(&s, &src_depth);
   PerturbDepths(&s);
   int moved = 0;
   ExpectSameAsSeparateSteps(&s, 2, &moved);
   EXPECT_GT(moved, 100);
+}
+
+// Fronto-parallel hypotheses at depth offsets `offs` over a grid of pixels,
+// scored in two views (so that a sum can stop half way): check(w, h,
+// weights, exact cost) for each.
+template <typename Check>
+void ForGridHypotheses(testing_scene::PlaneScene* s, std::initializer_list<float> offs,
+                       Check check) {
+  s->params.src[1] = s->params.src[0];
+  s->params.num_src = 2;
+  const float weights[kMaxSourceViews] = {1.0f, 0.5f};
+  for (int row = 10; row < s->ref.height - 10; row += 9) {
+    for (int col = 10; col < s->ref.width - 10; col += 7) {
+      RefWindow w;
+      PrepareWindow(s->params, col, row, &w);
+      for (float off : offs) {
+        const PlaneHypothesis h{s->depth * off, Vec3{0.0f, 0.0f, -1.0f}};
+        float costs[kMaxSourceViews];
+        ViewCosts(s->params, w, h, weights, costs);
+        check(w, h, weights, AggregateCost(costs, weights, 2));
+      }
+    }
+  }
 }
 
 // The local refinement's candidate costs (AggregateViewCostBelow): exact
@@ -86,29 +116,19 @@ TEST(RefineAndClassify, GeometricMatchesTheSeparateSteps) {
 TEST(RefineAndClassify, BoundedCostStopsOnlyAtItsLimit) {
   testing_scene::PlaneScene s;
   testing_scene::MakeScene(4.0f, true, &s);
-  s.params.src[1] = s.params.src[0];  // two views, so that a sum can stop half way
-  s.params.num_src = 2;
-  const float weights[2] = {1.0f, 0.5f};
   int stopped = 0;
-  for (int row = 10; row < s.ref.height - 10; row += 9) {
-    for (int col = 10; col < s.ref.width - 10; col += 7) {
-      RefWindow w;
-      PrepareWindow(s.params, col, row, &w);
-      for (float off : {1.0f, 1.03f, 1.09f}) {
-        const PlaneHypothesis h{s.depth * off, Vec3{0.0f, 0.0f, -1.0f}};
-        float costs[kMaxSourceViews];
-        ViewCosts(s.params, w, h, weights, costs);
-        const float exact = AggregateCost(costs, weights, 2);
-        ASSERT_NEAR(AggregateViewCostBelow(s.params, w, h, weights, kUnboundedCost), exact, 1e-6f);
-        ASSERT_NEAR(AggregateViewCostBelow(s.params, w, h, weights, exact + 0.01f), exact, 1e-6f);
+  ForGridHypotheses(
+      &s, {1.0f, 1.03f, 1.09f},
+      [&](const RefWindow& w, const PlaneHypothesis& h, const float* weights, float exact) {
+        const PassParams& p = s.params;
+        ASSERT_NEAR(AggregateViewCostBelow(p, w, h, weights, kUnboundedCost), exact, 1e-6f);
+        ASSERT_NEAR(AggregateViewCostBelow(p, w, h, weights, exact + 0.01f), exact, 1e-6f);
         const float limit = 0.6f * exact;
-        const float bounded = AggregateViewCostBelow(s.params, w, h, weights, limit);
-        ASSERT_GE(bounded, limit) << col << "," << row;
-        ASSERT_LE(bounded, exact + 1e-6f) << col << "," << row;
+        const float bounded = AggregateViewCostBelow(p, w, h, weights, limit);
+        ASSERT_GE(bounded, limit) << w.col << "," << w.row;
+        ASSERT_LE(bounded, exact + 1e-6f) << w.col << "," << w.row;
         stopped += bounded < exact - 1e-6f;
-      }
-    }
-  }
+      });
   EXPECT_GT(stopped, 100);  // the first view alone often sufficed
 }
 
@@ -118,32 +138,20 @@ TEST(RefineAndClassify, BoundedCostStopsOnlyAtItsLimit) {
 // still gets its exact cost.
 TEST(RefineAndClassify, GeometricTermsBoundTheCostFirst) {
   testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
-  const std::vector<float> src_depth = SourceDepth(s);
-  s.params.geometric = 1;
-  s.params.src[0].depth = ImageView{src_depth.data(), s.src.width, s.src.height, s.src.width};
-  s.params.src[1] = s.params.src[0];
-  s.params.num_src = 2;
-  const float weights[2] = {1.0f, 0.5f};
+  std::vector<float> src_depth;
+  MakeGeometricScene(&s, &src_depth);
   int bounded_by_geometry = 0;
-  for (int row = 10; row < s.ref.height - 10; row += 9) {
-    for (int col = 10; col < s.ref.width - 10; col += 7) {
-      RefWindow w;
-      PrepareWindow(s.params, col, row, &w);
-      for (float off : {1.0f, 1.02f, 1.1f}) {
-        const PlaneHypothesis h{s.depth * off, Vec3{0.0f, 0.0f, -1.0f}};
-        float costs[kMaxSourceViews];
-        ViewCosts(s.params, w, h, weights, costs);
-        const float exact = AggregateCost(costs, weights, 2);
-        const float geometric = MeanGeometricTerm(s.params, col, row, h, weights);
-        ASSERT_NEAR(AggregateViewCostBelow(s.params, w, h, weights, exact + 0.01f), exact, 1e-6f);
+  ForGridHypotheses(
+      &s, {1.0f, 1.02f, 1.1f},
+      [&](const RefWindow& w, const PlaneHypothesis& h, const float* weights, float exact) {
+        const PassParams& p = s.params;
+        const float geometric = MeanGeometricTerm(p, w.col, w.row, h, weights);
+        ASSERT_NEAR(AggregateViewCostBelow(p, w, h, weights, exact + 0.01f), exact, 1e-6f);
         if (geometric > 0.0f) {
-          ASSERT_NEAR(AggregateViewCostBelow(s.params, w, h, weights, geometric), geometric, 1e-6f);
+          ASSERT_NEAR(AggregateViewCostBelow(p, w, h, weights, geometric), geometric, 1e-6f);
           bounded_by_geometry += geometric < exact - 1e-3f;
         }
-      }
-    }
-  }
+      });
   EXPECT_GT(bounded_by_geometry, 100);  // the windows' costs were never needed
 }
 

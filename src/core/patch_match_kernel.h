@@ -481,8 +481,8 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
   for (int k = 0; k < kNumRefinementCandidates; ++k) {
     const PlaneHypothesis h = RefinementCandidate(p, col, row, cur, k, &refine_rng);
     if (!DepthInRange(p, h.depth)) continue;
-    // Most candidates lose, the random ones by far: a partial sum that
-    // reaches best_cost settles it before all the views are scored.
+    // Most candidates lose, the random ones by far: once a lower bound of
+    // their cost reaches best_cost, their remaining views go unscored.
     const float agg = AggregateViewCostBelow(p, w, h, weights, best_cost);
     if (agg < best_cost) {
       best_cost = agg;

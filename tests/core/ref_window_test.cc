@@ -308,7 +308,9 @@ TEST(RefWindow, CentreTestDropsOnlyLanesThatCostMax) {
       SourceSums sums;
       EXPECT_FALSE(CentreInSource(H[l], View(src), col, row)) << "trial " << trial << " lane " << l;
       // (A window clipped by the reference border may not hold its centre.)
-      if (!w.clipped) EXPECT_FALSE(WindowSumsScalar(w, View(src), H[l], &sums)) << "lane " << l;
+      if (!w.clipped) {
+        EXPECT_FALSE(WindowSumsScalar(w, View(src), H[l], &sums)) << "lane " << l;
+      }
       EXPECT_EQ(WindowNccCost(w, View(ref), View(src), H[l], kUniform), kMaxCost);
     }
   }

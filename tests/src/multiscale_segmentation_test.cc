@@ -67,7 +67,9 @@ TEST(MultiscaleSegmentation, NoRegionCrossesAColourEdge) {
     for (int row = 0; row < kHeight; ++row) {
       for (int col = 0; col < kWidth; ++col) {
         (col < kWidth / 2 ? left : right).insert(layers.At(n, row, col));
-        if (col < kWidth / 2 - kStrip) EXPECT_EQ(layers.At(n, row, col), layers.At(n, 0, 0));
+        if (col < kWidth / 2 - kStrip) {
+          EXPECT_EQ(layers.At(n, row, col), layers.At(n, 0, 0));
+        }
         if (col >= kWidth / 2 + kStrip) {
           EXPECT_EQ(layers.At(n, row, col), layers.At(n, 0, kWidth - 1));
         }

@@ -147,36 +147,37 @@ MSP_HD void DeformableViewCosts(const PassParams& p, const DeformableWindows& w,
   }
 }
 
-// AggregateCost of DeformableViewCosts(h) in the weighted views, or, as
-// soon as a lower bound of it reaches `limit`, that bound, by
-// AggregateViewCostBelow's rule (the deformable photometric costs are >= 0
-// as well). With the exact cost, *conventional receives the AggregateCost of
-// the conventional costs; it is not set otherwise.
+// The deformable cost of a view, for BoundedAggregateCost; sums the
+// conventional costs of the views it scores on the way.
+struct DeformableViewCostSum {
+  const PassParams& p;
+  const DeformableWindows& w;
+  const DeformableParams& d;
+  float conventional_sum;  // of weight x (centre window's cost + geometric term)
+  int scored;
+  MSP_HD float operator()(int j, const PreparedPlane& plane, float weight, float geometric) {
+    float centre;
+    const float photometric = DeformablePhotometricCost(p, w, j, plane, d, &centre);
+    conventional_sum += weight * (centre + geometric);
+    ++scored;
+    return photometric;
+  }
+};
+
+// AggregateCost of DeformableViewCosts(h) in the weighted views, or a bound
+// of it at or above `limit` (BoundedAggregateCost; the deformable
+// photometric costs are >= 0 as well). With the exact cost, *conventional
+// receives the AggregateCost of the conventional costs; it is meaningless
+// otherwise.
 MSP_HD float DeformableAggregateBelow(const PassParams& p, const DeformableWindows& w,
                                       const PlaneHypothesis& h, const DeformableParams& d,
                                       const float* weights, float limit, float* conventional) {
-  const float total_weight = TotalWeight(weights, p.num_src);
-  const PreparedPlane plane = PreparePlane(p, w.centre.col, w.centre.row, h);
-  if (!plane.valid || !(total_weight > 0.0f)) {
-    *conventional = kMaxCost;
-    return kMaxCost;
-  }
-  float geometric[kMaxSourceViews];
-  GeometricTerms(p, w.centre.col, w.centre.row, plane, weights, geometric);
-  float bound = 0.0f;
-  for (int j = 0; j < p.num_src; ++j) bound += weights[j] * geometric[j];
-  float sum = 0.0f, sum_conventional = 0.0f;
-  for (int j = 0; j < p.num_src; ++j) {
-    if (!IsWeighted(weights, j)) continue;  // adds weight 0 x kMaxCost = 0
-    if (bound / total_weight >= limit) return bound / total_weight;
-    float centre;
-    const float photometric = DeformablePhotometricCost(p, w, j, plane, d, &centre);
-    sum += weights[j] * (photometric + geometric[j]);
-    sum_conventional += weights[j] * (centre + geometric[j]);
-    bound += weights[j] * photometric;
-  }
-  *conventional = sum_conventional / total_weight;
-  return sum / total_weight;
+  DeformableViewCostSum views{p, w, d, 0.0f, 0};
+  const float cost = BoundedAggregateCost(p, w.centre.col, w.centre.row, h, weights, limit, views);
+  // No view scored: the plane was seen edge-on, or the bound stopped it at once.
+  *conventional =
+      views.scored > 0 ? views.conventional_sum / TotalWeight(weights, p.num_src) : kMaxCost;
+  return cost;
 }
 
 static_assert(kMaxAnchors <= kWindowLanes, "one vector lane per anchor's candidate");

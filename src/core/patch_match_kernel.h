@@ -185,31 +185,51 @@ MSP_HD float TotalWeight(const float* weights, int num_views) {
 // A limit no cost reaches: the bounded costs below are then exact.
 constexpr float kUnboundedCost = 1e30f;
 
-// AggregateCost of ViewCosts(h), or, as soon as a lower bound of it reaches
-// `limit`, that bound instead: a candidate that cannot beat `limit` is known
-// to lose before all its windows are scored. The bound starts at the
-// geometric terms of all the views (in a geometric pass a far-off candidate
-// stops there, with no window scored) and adds each view's NCC cost, >= 0,
-// as it is scored. (The sums run in AggregateCost's order but may round
-// differently from it: compare its results with each other.)
-MSP_HD float AggregateViewCostBelow(const PassParams& p, const RefWindow& w,
-                                    const PlaneHypothesis& h, const float* weights, float limit) {
+// The weighted mean over the weighted views of photometric(j, plane,
+// weight, geometric) + the geometric term of view j, or, as soon as a lower
+// bound of it reaches `limit`, that bound instead: a candidate that cannot
+// beat `limit` is known to lose before all its windows are scored. The
+// bound starts at the geometric terms of all the views (in a geometric pass
+// a far-off candidate stops there, with no window scored) and adds each
+// view's photometric cost, which must be >= 0, as it is scored. kMaxCost for
+// a plane seen edge-on, without a call to `photometric`.
+template <typename PhotometricFn>
+MSP_HD float BoundedAggregateCost(const PassParams& p, int col, int row, const PlaneHypothesis& h,
+                                  const float* weights, float limit, PhotometricFn& photometric) {
   const float total_weight = TotalWeight(weights, p.num_src);
-  const PreparedPlane plane = PreparePlane(p, w.col, w.row, h);
+  const PreparedPlane plane = PreparePlane(p, col, row, h);
   if (!plane.valid || !(total_weight > 0.0f)) return kMaxCost;
   float geometric[kMaxSourceViews];
-  GeometricTerms(p, w.col, w.row, plane, weights, geometric);
+  GeometricTerms(p, col, row, plane, weights, geometric);
   float bound = 0.0f;
   for (int j = 0; j < p.num_src; ++j) bound += weights[j] * geometric[j];
   float sum = 0.0f;
   for (int j = 0; j < p.num_src; ++j) {
     if (!IsWeighted(weights, j)) continue;  // adds weight 0 x kMaxCost = 0
     if (bound / total_weight >= limit) return bound / total_weight;
-    const float ncc = PhotometricViewCost(p, w, j, plane);
-    sum += weights[j] * (ncc + geometric[j]);
-    bound += weights[j] * ncc;
+    const float cost = photometric(j, plane, weights[j], geometric[j]);
+    sum += weights[j] * (cost + geometric[j]);
+    bound += weights[j] * cost;
   }
   return sum / total_weight;
+}
+
+// The NCC cost of a view, for BoundedAggregateCost.
+struct NccViewCost {
+  const PassParams& p;
+  const RefWindow& w;
+  MSP_HD float operator()(int j, const PreparedPlane& plane, float, float) const {
+    return PhotometricViewCost(p, w, j, plane);
+  }
+};
+
+// AggregateCost of ViewCosts(h), or a bound of it at or above `limit`
+// (BoundedAggregateCost). (The sums run in AggregateCost's order but may
+// round differently from it: compare its results with each other.)
+MSP_HD float AggregateViewCostBelow(const PassParams& p, const RefWindow& w,
+                                    const PlaneHypothesis& h, const float* weights, float limit) {
+  const NccViewCost ncc{p, w};
+  return BoundedAggregateCost(p, w.col, w.row, h, weights, limit, ncc);
 }
 
 static_assert(kNumPropagationCandidates <= kWindowLanes, "one vector lane per candidate");

@@ -32,6 +32,8 @@ MSP_HD int CountConsistentViews(const PassParams& p, const FilterParams& f, int 
   if (!(dist > 0.0f)) return 0;
   const Vec3 X = CamToWorld(p.ref_camera, BackProject(p.ref_camera, static_cast<float>(col),
                                                       static_cast<float>(row), h.depth));
+  RefWindow w;
+  PrepareWindow(p, col, row, &w);
   int count = 0;
   for (int j = 0; j < p.num_src; ++j) {
     const SourceView& s = p.src[j];
@@ -39,7 +41,7 @@ MSP_HD int CountConsistentViews(const PassParams& p, const FilterParams& f, int 
       continue;
     }
     const Mat3 H = ComputeHomography(p.ref_camera, s.rel, h.normal, dist);
-    if (1.0f - NccCost(p.ref_image, s.image, H, col, row, p.ncc) < f.min_ncc) continue;
+    if (1.0f - WindowNccCost(w, p.ref_image, s.image, H, p.ncc) < f.min_ncc) continue;
     if (p.geometric && s.depth.data != nullptr &&
         ReprojectionError(p.ref_camera, s.camera, s.depth, col, row, h.depth,
                           f.geom_max_error + 1.0f) > f.geom_max_error) {

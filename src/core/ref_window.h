@@ -60,6 +60,9 @@ MSP_HD void PrepareRefWindow(const ImageView& ref, int col, int row, int radius,
   w->clipped = !(col - radius >= 0 && row - radius >= 0 && col + radius < ref.width &&
                  row + radius < ref.height);
   if (bilateral || per_side * per_side > kMaxFastWindowSamples) return;
+  // The box starts at the centre, which the padding lanes repeat. Integer
+  // bounds: fminf and fmaxf are library calls here, not instructions.
+  int box_c0 = col, box_c1 = col, box_r0 = row, box_r1 = row;
   int n = 0;
   float sum = 0.0f;
   for (int oy = -radius; oy <= radius; oy += step) {
@@ -70,6 +73,10 @@ MSP_HD void PrepareRefWindow(const ImageView& ref, int col, int row, int radius,
       w->y[n] = static_cast<float>(r);
       w->value[n] = ref.At(c, r);
       sum += w->value[n];
+      box_c0 = c < box_c0 ? c : box_c0;
+      box_c1 = c > box_c1 ? c : box_c1;
+      box_r0 = r < box_r0 ? r : box_r0;
+      box_r1 = r > box_r1 ? r : box_r1;
       ++n;
     }
   }
@@ -90,14 +97,10 @@ MSP_HD void PrepareRefWindow(const ImageView& ref, int col, int row, int radius,
     w->y[k] = static_cast<float>(row);
     w->value[k] = 0.0f;
   }
-  w->box[0] = w->box[1] = static_cast<float>(col);
-  w->box[2] = w->box[3] = static_cast<float>(row);
-  for (int k = 0; k < n; ++k) {
-    w->box[0] = fminf(w->box[0], w->x[k]);
-    w->box[1] = fmaxf(w->box[1], w->x[k]);
-    w->box[2] = fminf(w->box[2], w->y[k]);
-    w->box[3] = fmaxf(w->box[3], w->y[k]);
-  }
+  w->box[0] = static_cast<float>(box_c0);
+  w->box[1] = static_cast<float>(box_c1);
+  w->box[2] = static_cast<float>(box_r0);
+  w->box[3] = static_cast<float>(box_r1);
 }
 
 // Source sums over window w warped by H.

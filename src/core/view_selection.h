@@ -37,6 +37,7 @@ MSP_HD uint32_t SelectViews(const float* costs, int num_candidates, int num_view
                             float* weights) {
   const float tau = GoodCostThreshold(iteration);
   float likelihood[kMaxSourceViews];
+  float cumulative[kMaxSourceViews];  // running sums of the likelihoods
   float total = 0.0f;
   for (int j = 0; j < num_views; ++j) {
     int good = 0, bad = 0;
@@ -59,6 +60,7 @@ MSP_HD uint32_t SelectViews(const float* costs, int num_candidates, int num_view
     l *= ((previous_mask >> j) & 1u) ? kSelectedPrior : kUnselectedPrior;
     likelihood[j] = l;
     total += l;
+    cumulative[j] = total;
   }
   uint32_t mask = 0u;
   for (int j = 0; j < num_views; ++j) weights[j] = 0.0f;
@@ -67,16 +69,13 @@ MSP_HD uint32_t SelectViews(const float* costs, int num_candidates, int num_view
     return num_views >= 32 ? 0xFFFFFFFFu : ((1u << num_views) - 1u);
   }
   for (int s = 0; s < num_samples; ++s) {
+    // The first view whose running sum exceeds u, the last if none does.
+    // The sums never decrease, so that view's index is the number of sums
+    // at or below u: counted without a branch, whose outcome is random.
     const float u = rng->Uniform() * total;
-    float acc = 0.0f;
-    int pick = num_views - 1;
-    for (int j = 0; j < num_views; ++j) {
-      acc += likelihood[j];
-      if (u < acc) {
-        pick = j;
-        break;
-      }
-    }
+    int pick = 0;
+    for (int j = 0; j < num_views; ++j) pick += cumulative[j] <= u;
+    if (pick > num_views - 1) pick = num_views - 1;
     // Rounding can leave u past the last non-zero view: step back to one.
     while (pick > 0 && likelihood[pick] <= 0.0f) --pick;
     weights[pick] += 1.0f;

@@ -28,6 +28,25 @@ TEST(ViewSelection, GoodViewsAreDrawnAndBadViewsNever) {
   EXPECT_NEAR(weights[0] + weights[1] + weights[2] + weights[3], 1.0f, 1e-6f);
 }
 
+TEST(ViewSelection, DrawsFollowTheLikelihoods) {
+  // Views 0-2 match every candidate alike, so their likelihoods are the
+  // priors: 0.9 for the views selected last time (0 and 2), 0.1 for view 1.
+  // View 3, last, mismatches: likelihood 0, never drawn.
+  float costs[8 * kViews];
+  for (int k = 0; k < 8; ++k) {
+    for (int j = 0; j < 3; ++j) costs[k * kViews + j] = 0.1f;
+    costs[k * kViews + 3] = 1.9f;
+  }
+  Rng rng = MakeRng(RngKey(7, 0, 0, 0, 0));
+  float weights[kViews];
+  const uint32_t mask = SelectViews(costs, 8, kViews, kViews, 0, 0x5u, 20000, &rng, weights);
+  EXPECT_EQ(mask, 0x7u);
+  EXPECT_NEAR(weights[0], 0.9f / 1.9f, 0.02f);
+  EXPECT_NEAR(weights[1], 0.1f / 1.9f, 0.01f);
+  EXPECT_NEAR(weights[2], 0.9f / 1.9f, 0.02f);
+  EXPECT_EQ(weights[3], 0.0f);
+}
+
 TEST(ViewSelection, AllViewsBadFallsBackToEqualWeights) {
   float costs[8 * kViews];
   for (float& c : costs) c = 1.9f;

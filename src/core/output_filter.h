@@ -28,8 +28,8 @@ MSP_HD float TriangulationAngle(Vec3 center_a, Vec3 center_b, Vec3 X) {
 MSP_HD int CountConsistentViews(const PassParams& p, const FilterParams& f, int col, int row) {
   const PlaneHypothesis h = p.state.Get(p.state.Index(col, row));
   if (!(h.depth > 0.0f)) return 0;
-  const float dist = PlaneDistance(p.ref_camera, col, row, h);
-  if (!(dist > 0.0f)) return 0;
+  const PreparedPlane plane = PreparePlane(p, col, row, h);
+  if (!plane.valid) return 0;
   const Vec3 X = CamToWorld(p.ref_camera, BackProject(p.ref_camera, static_cast<float>(col),
                                                       static_cast<float>(row), h.depth));
   RefWindow w;
@@ -40,8 +40,7 @@ MSP_HD int CountConsistentViews(const PassParams& p, const FilterParams& f, int 
     if (TriangulationAngle(p.ref_camera.center, s.camera.center, X) < f.min_triangulation_angle) {
       continue;
     }
-    const Mat3 H = ComputeHomography(p.ref_camera, s.rel, h.normal, dist);
-    if (1.0f - WindowNccCost(w, p.ref_image, s.image, H, p.ncc) < f.min_ncc) continue;
+    if (1.0f - PhotometricViewCost(p, w, j, plane) < f.min_ncc) continue;
     if (p.geometric && s.depth.data != nullptr &&
         ReprojectionError(p.ref_camera, s.camera, s.depth, col, row, h.depth,
                           f.geom_max_error + 1.0f) > f.geom_max_error) {

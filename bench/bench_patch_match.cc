@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
-#include "core/deformable_cost.h"
-#include "core/patch_match_kernel.h"
-#include "parallel_for.h"
-#include "pixel_state.h"
-#include "sweeps.h"
-#include "synthetic_views.h"
+#include "base/parallel_for.h"
+#include "core/deformable/deformable_cost.h"
+#include "core/patch_match/patch_match_kernel.h"
+#include "patch_match/pixel_state.h"
+#include "patch_match/sweeps.h"
+#include "tests/src/synthetic_views.h"
 
 namespace msp {
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 #include <type_traits>
 
-#include "errors.h"
+#include "colmap_ext/errors.h"
 
 namespace msp {
 

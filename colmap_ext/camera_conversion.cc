@@ -1,5 +1,5 @@
 // Sparse camera + pose -> core::Camera, and COLMAP's Downsize arithmetic.
-#include "camera_conversion.h"
+#include "colmap_ext/camera_conversion.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -7,8 +7,8 @@
 #include <cmath>
 #include <string>
 
-#include "errors.h"
-#include "workspace.h"
+#include "colmap_ext/errors.h"
+#include "colmap_ext/workspace.h"
 
 namespace msp {
 namespace {

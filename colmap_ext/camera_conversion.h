@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "core/camera.h"
-#include "sparse_model.h"
+#include "colmap_ext/sparse_model.h"
+#include "core/math/camera.h"
 
 namespace msp {
 

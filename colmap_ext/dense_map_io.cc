@@ -1,4 +1,4 @@
-#include "dense_map_io.h"
+#include "colmap_ext/dense_map_io.h"
 
 #include <cctype>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "binary_io.h"
-#include "errors.h"
-#include "file_util.h"
+#include "colmap_ext/binary_io.h"
+#include "colmap_ext/errors.h"
+#include "colmap_ext/file_util.h"
 
 namespace msp {
 namespace {

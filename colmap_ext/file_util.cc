@@ -1,4 +1,4 @@
-#include "file_util.h"
+#include "colmap_ext/file_util.h"
 
 #include <unistd.h>
 
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <system_error>
 
-#include "errors.h"
+#include "colmap_ext/errors.h"
 
 namespace msp {
 namespace fs = std::filesystem;

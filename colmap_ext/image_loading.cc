@@ -1,4 +1,4 @@
-#include "image_loading.h"
+#include "colmap_ext/image_loading.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "errors.h"
+#include "colmap_ext/errors.h"
 
 namespace msp {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "dense_map.h"
+#include "base/dense_map.h"
 
 namespace msp {
 

@@ -1,12 +1,12 @@
-#include "map_writer.h"
+#include "colmap_ext/map_writer.h"
 
 #include <filesystem>
 #include <stdexcept>
 #include <utility>
 
-#include "dense_map_io.h"
-#include "prior_previews.h"
-#include "workspace.h"
+#include "colmap_ext/dense_map_io.h"
+#include "colmap_ext/prior_previews.h"
+#include "colmap_ext/workspace.h"
 
 namespace msp {
 

@@ -1,4 +1,4 @@
-#include "mask_conversion.h"
+#include "colmap_ext/mask_conversion.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -7,9 +7,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
-#include "errors.h"
-#include "file_util.h"
-#include "mask_layers.h"
+#include "colmap_ext/errors.h"
+#include "colmap_ext/file_util.h"
+#include "colmap_ext/mask_layers.h"
 
 namespace msp {
 namespace fs = std::filesystem;

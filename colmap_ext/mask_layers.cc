@@ -1,11 +1,11 @@
-#include "mask_layers.h"
+#include "colmap_ext/mask_layers.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/prior_limits.h"
-#include "errors.h"
-#include "file_util.h"
+#include "colmap_ext/errors.h"
+#include "colmap_ext/file_util.h"
+#include "core/prior/prior_limits.h"
 
 namespace msp {
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "label_layers.h"
+#include "prior/label_layers.h"
 
 namespace msp {
 

@@ -3,8 +3,8 @@
 #include <iostream>
 #include <string>
 
-#include "errors.h"
-#include "mask_conversion.h"
+#include "colmap_ext/errors.h"
+#include "colmap_ext/mask_conversion.h"
 
 namespace {
 

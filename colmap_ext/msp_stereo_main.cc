@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "map_writer.h"
-#include "option_check.h"
-#include "option_parser.h"
+#include "colmap_ext/map_writer.h"
+#include "colmap_ext/workspace.h"
+#include "options/option_check.h"
+#include "options/option_parser.h"
 #include "stereo.h"
-#include "workspace.h"
 
 namespace msp {
 namespace {

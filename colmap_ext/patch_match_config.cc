@@ -1,6 +1,6 @@
 // Parsing of stereo/patch-match.cfg, following COLMAP's
 // PatchMatchController::ReadProblems (contract section 5).
-#include "patch_match_config.h"
+#include "colmap_ext/patch_match_config.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "errors.h"
-#include "file_util.h"
+#include "colmap_ext/errors.h"
+#include "colmap_ext/file_util.h"
 
 namespace msp {
 namespace {

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "sparse_model.h"
+#include "colmap_ext/sparse_model.h"
 
 namespace msp {
 

@@ -1,10 +1,10 @@
-#include "prior_previews.h"
+#include "colmap_ext/prior_previews.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "errors.h"
-#include "file_util.h"
+#include "colmap_ext/errors.h"
+#include "colmap_ext/file_util.h"
 
 namespace msp {
 namespace {

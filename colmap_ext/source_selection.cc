@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "patch_match_config.h"
+#include "colmap_ext/patch_match_config.h"
 
 namespace msp {
 namespace {

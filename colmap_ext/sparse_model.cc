@@ -1,13 +1,13 @@
 // Camera model table, lookups and the binary/text dispatch of the sparse model.
 // The format-specific readers and writers live in sparse_model_{binary,text}.cc.
-#include "sparse_model.h"
+#include "colmap_ext/sparse_model.h"
 
 #include <string>
 #include <unordered_set>
 
-#include "errors.h"
-#include "file_util.h"
-#include "sparse_model_internal.h"
+#include "colmap_ext/errors.h"
+#include "colmap_ext/file_util.h"
+#include "colmap_ext/sparse_model_internal.h"
 
 namespace msp {
 namespace {

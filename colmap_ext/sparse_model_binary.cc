@@ -3,11 +3,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "binary_io.h"
-#include "errors.h"
-#include "file_util.h"
-#include "sparse_model.h"
-#include "sparse_model_internal.h"
+#include "colmap_ext/binary_io.h"
+#include "colmap_ext/errors.h"
+#include "colmap_ext/file_util.h"
+#include "colmap_ext/sparse_model.h"
+#include "colmap_ext/sparse_model_internal.h"
 
 namespace msp {
 namespace {

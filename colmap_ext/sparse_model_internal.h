@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "sparse_model.h"
+#include "colmap_ext/sparse_model.h"
 
 namespace msp {
 

@@ -1,6 +1,6 @@
 // LoadWorkspace: a COLMAP dense workspace -> views and problems, with one
 // specific error for every kind of bad input (contract sections 1, 4, 5).
-#include "workspace.h"
+#include "colmap_ext/workspace.h"
 
 #include <algorithm>
 #include <cctype>
@@ -9,12 +9,12 @@
 #include <unordered_map>
 #include <vector>
 
-#include "camera_conversion.h"
-#include "errors.h"
-#include "file_util.h"
-#include "image_loading.h"
-#include "mask_layers.h"
-#include "patch_match_config.h"
+#include "colmap_ext/camera_conversion.h"
+#include "colmap_ext/errors.h"
+#include "colmap_ext/file_util.h"
+#include "colmap_ext/image_loading.h"
+#include "colmap_ext/mask_layers.h"
+#include "colmap_ext/patch_match_config.h"
 
 namespace msp {
 namespace {

@@ -1,13 +1,13 @@
 // A COLMAP dense workspace (the output of `colmap image_undistorter`) read into
-// the plain structs of src/mvs_input.h, and the paths of the maps written back.
+// the plain structs of src/base/mvs_input.h, and the paths of the maps written back.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "mvs_input.h"
-#include "sparse_model.h"
-#include "stereo_options.h"
+#include "base/mvs_input.h"
+#include "colmap_ext/sparse_model.h"
+#include "options/stereo_options.h"
 
 namespace msp {
 
@@ -35,8 +35,7 @@ Workspace LoadWorkspace(const StereoCommandOptions& options);
 core::Camera MakeCoreCamera(const SparseCamera& camera, const SparseImage& image);
 
 // Scale factor and size of COLMAP's Downsize for a maximum side (<= 0: none).
-void DownsizedSize(int width, int height, int max_image_size, int* new_width,
-                   int* new_height);
+void DownsizedSize(int width, int height, int max_image_size, int* new_width, int* new_height);
 
 // <ws>/stereo/{depth,normal}_maps/<name>.<type>.bin, type "photometric" or "geometric".
 std::string DepthMapPath(const std::string& workspace_path, const std::string& image_name,

@@ -3,11 +3,11 @@
 
 #include <cstdint>
 
-#include "core/anchors.h"
-#include "core/deformable_cost.h"
-#include "core/deformable_update.h"
-#include "core/patch_match_kernel.h"
-#include "core/reliability.h"
+#include "core/deformable/anchors.h"
+#include "core/deformable/deformable_cost.h"
+#include "core/deformable/deformable_update.h"
+#include "core/deformable/reliability.h"
+#include "core/patch_match/patch_match_kernel.h"
 
 namespace msp {
 namespace cuda {

@@ -15,9 +15,9 @@
 #include <filesystem>
 #include <string>
 
-#include "evaluate_workspace.h"
-#include "generate.h"
-#include "gt_maps.h"
+#include "integration/scene/generate.h"
+#include "integration/scene/gt_maps.h"
+#include "tools/evaluate_workspace.h"
 
 namespace msp {
 namespace {

@@ -18,9 +18,9 @@
 #include <iterator>
 #include <string>
 
-#include "dense_map_io.h"
-#include "evaluate_workspace.h"
-#include "generate.h"
+#include "colmap_ext/dense_map_io.h"
+#include "integration/scene/generate.h"
+#include "tools/evaluate_workspace.h"
 
 namespace msp {
 namespace {

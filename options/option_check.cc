@@ -1,10 +1,10 @@
-#include "option_check.h"
+#include "options/option_check.h"
 
 #include <sstream>
 #include <string>
 
-#include "core/anchors.h"
-#include "core/prior_limits.h"
+#include "core/deformable/anchors.h"
+#include "core/prior/prior_limits.h"
 
 namespace msp {
 namespace {
@@ -96,8 +96,8 @@ void CheckMspStereoOptions(const MspStereoOptions& o) {
   CheckRange("MspStereo.reliable_min_spread", o.reliable_min_spread, 0.0, 2.0);
   CheckRange("MspStereo.anchor_max_distance", o.anchor_max_distance, core::kFirstRayRadius, 1 << 16,
              false, false, " (the first ray sample lies 2 px from the pixel)");
-  CheckRange("MspStereo.num_mask_levels", o.num_mask_levels, 1, core::kMaxLabelLayers, false,
-             false, " (best-layer sets are 32-bit sets, kMaxLabelLayers)");
+  CheckRange("MspStereo.num_mask_levels", o.num_mask_levels, 1, core::kMaxLabelLayers, false, false,
+             " (best-layer sets are 32-bit sets, kMaxLabelLayers)");
   CheckPositive("MspStereo.crf_alpha", o.crf_alpha);
   CheckPositive("MspStereo.crf_beta", o.crf_beta);
   CheckRange("MspStereo.crf_unary_confidence", o.crf_unary_confidence, 0.0, 1.0, true, true);

@@ -3,8 +3,8 @@
 // is then said in the message (window_radius, see kMaxWindowRadius).
 #pragma once
 
-#include "option_parser.h"
-#include "stereo_options.h"
+#include "options/option_parser.h"
+#include "options/stereo_options.h"
 
 namespace msp {
 

@@ -1,4 +1,4 @@
-#include "option_parser.h"
+#include "options/option_parser.h"
 
 #include <algorithm>
 #include <boost/program_options.hpp>
@@ -8,7 +8,7 @@
 #include <sstream>
 #include <utility>
 
-#include "core/prior_limits.h"
+#include "core/prior/prior_limits.h"
 
 namespace msp {
 namespace {

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "stereo_options.h"
+#include "options/stereo_options.h"
 
 namespace msp {
 

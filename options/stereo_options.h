@@ -6,12 +6,12 @@
 
 #include <string>
 
-#include "core/limits.h"
+#include "core/math/limits.h"
 
 namespace msp {
 
 // Widest matching window (half size) the back-ends support, defined once in
-// src/core/limits.h next to the other capacities. COLMAP accepts up to 32
+// src/core/math/limits.h next to the other capacities. COLMAP accepts up to 32
 // (its CUDA block width) although its kernels handle only 20; Check() uses
 // this constant so an accepted value always fits the kernels' window arrays.
 using core::kMaxWindowRadius;

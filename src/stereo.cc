@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "patch_match_cpu.h"
+#include "patch_match/patch_match_cpu.h"
 
 namespace msp {
 

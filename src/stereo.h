@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "dense_map.h"
-#include "mvs_input.h"
-#include "stereo_options.h"
+#include "base/dense_map.h"
+#include "base/mvs_input.h"
+#include "options/stereo_options.h"
 
 namespace msp {
 

@@ -1,6 +1,6 @@
-#include "evaluate_cloud.h"
+#include "tools/evaluate_cloud.h"
 
-#include "point_grid.h"
+#include "tools/point_grid.h"
 
 namespace msp {
 namespace eval {

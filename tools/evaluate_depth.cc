@@ -1,4 +1,4 @@
-#include "evaluate_depth.h"
+#include "tools/evaluate_depth.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "dense_map.h"
+#include "base/dense_map.h"
 
 namespace msp {
 namespace eval {

@@ -1,10 +1,10 @@
-#include "evaluate_ground_truth.h"
+#include "tools/evaluate_ground_truth.h"
 
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
-#include "errors.h"
+#include "colmap_ext/errors.h"
 
 namespace msp {
 namespace eval {

@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "evaluate_report.h"
-#include "evaluate_workspace.h"
+#include "tools/evaluate_report.h"
+#include "tools/evaluate_workspace.h"
 
 namespace {
 

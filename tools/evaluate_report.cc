@@ -1,4 +1,4 @@
-#include "evaluate_report.h"
+#include "tools/evaluate_report.h"
 
 #include <cstdio>
 #include <iomanip>
@@ -33,10 +33,10 @@ const RegionMetrics& Select(const DepthMapMetrics& m, Region region) {
 
 void PrintMapTable(const EvaluationResult& r, Region region, std::ostream& out) {
   const double* t = r.info.depth_relative_thresholds;
-  const char* what = region == Region::kAll
-                         ? "all pixels"
-                         : (region == Region::kTextureless ? "textureless pixels only"
-                                                           : "textured pixels only");
+  const char* what =
+      region == Region::kAll
+          ? "all pixels"
+          : (region == Region::kTextureless ? "textureless pixels only" : "textured pixels only");
   out << "\nDepth maps (" << r.input_type << "), " << what << ", thresholds " << 100.0 * t[0]
       << "% / " << 100.0 * t[1] << "% relative depth error\n";
   char header[256];

@@ -4,7 +4,7 @@
 #include <ostream>
 #include <string>
 
-#include "evaluate_workspace.h"
+#include "tools/evaluate_workspace.h"
 
 namespace msp {
 namespace eval {

@@ -1,11 +1,11 @@
-#include "evaluate_workspace.h"
+#include "tools/evaluate_workspace.h"
 
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
-#include "dense_map_io.h"
-#include "errors.h"
-#include "ply_points.h"
+#include "colmap_ext/dense_map_io.h"
+#include "colmap_ext/errors.h"
+#include "tools/ply_points.h"
 
 namespace msp {
 namespace eval {

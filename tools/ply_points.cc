@@ -1,10 +1,10 @@
-#include "ply_points.h"
+#include "tools/ply_points.h"
 
 #include <cstring>
 #include <fstream>
 #include <sstream>
 
-#include "errors.h"
+#include "colmap_ext/errors.h"
 
 namespace msp {
 namespace eval {

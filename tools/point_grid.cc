@@ -1,4 +1,4 @@
-#include "point_grid.h"
+#include "tools/point_grid.h"
 
 #include <algorithm>
 #include <cmath>

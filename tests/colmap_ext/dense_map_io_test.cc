@@ -1,4 +1,4 @@
-#include "dense_map_io.h"
+#include "colmap_ext/dense_map_io.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "test_util.h"
+#include "tests/colmap_ext/test_util.h"
 
 namespace msp {
 namespace {

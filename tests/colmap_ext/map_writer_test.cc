@@ -1,4 +1,4 @@
-#include "map_writer.h"
+#include "colmap_ext/map_writer.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "dense_map_io.h"
-#include "prior_previews.h"
-#include "workspace.h"
+#include "colmap_ext/dense_map_io.h"
+#include "colmap_ext/prior_previews.h"
+#include "colmap_ext/workspace.h"
 
 namespace msp {
 namespace {

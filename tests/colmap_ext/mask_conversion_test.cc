@@ -1,4 +1,4 @@
-#include "mask_conversion.h"
+#include "colmap_ext/mask_conversion.h"
 
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
-#include "mask_layers.h"
-#include "test_util.h"
+#include "colmap_ext/mask_layers.h"
+#include "tests/colmap_ext/test_util.h"
 
 namespace msp {
 namespace {

@@ -1,4 +1,4 @@
-#include "mask_layers.h"
+#include "colmap_ext/mask_layers.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
-#include "test_util.h"
+#include "tests/colmap_ext/test_util.h"
 
 namespace msp {
 namespace {

@@ -1,11 +1,11 @@
-#include "patch_match_config.h"
+#include "colmap_ext/patch_match_config.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "test_util.h"
+#include "tests/colmap_ext/test_util.h"
 
 namespace msp {
 namespace {

@@ -1,11 +1,11 @@
-#include "prior_previews.h"
+#include "colmap_ext/prior_previews.h"
 
 #include <gtest/gtest.h>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "test_util.h"
+#include "tests/colmap_ext/test_util.h"
 
 namespace msp {
 namespace {

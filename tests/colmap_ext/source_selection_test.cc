@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "patch_match_config.h"
+#include "colmap_ext/patch_match_config.h"
 
 namespace msp {
 namespace {

@@ -8,8 +8,8 @@
 #include <iterator>
 #include <string>
 
-#include "errors.h"
-#include "temp_dir.h"
+#include "colmap_ext/errors.h"
+#include "tests/temp_dir.h"
 
 namespace msp {
 namespace test {

@@ -1,4 +1,4 @@
-#include "workspace.h"
+#include "colmap_ext/workspace.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "test_util.h"
+#include "tests/colmap_ext/test_util.h"
 
 namespace msp {
 namespace {

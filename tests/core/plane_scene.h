@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/patch_match_kernel.h"
-#include "core/rng.h"
-#include "test_cameras.h"
+#include "core/math/rng.h"
+#include "core/patch_match/patch_match_kernel.h"
+#include "tests/core/test_cameras.h"
 
 namespace msp {
 namespace core {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "core/camera.h"
+#include "core/math/camera.h"
 
 namespace msp {
 namespace core {
@@ -33,7 +33,9 @@ inline Camera Reference() {
   return MakeCamera(200, 150, 180.0f, Mat3{{1, 0, 0, 0, 1, 0, 0, 0, 1}}, Vec3{0, 0, 0});
 }
 
-inline Camera Source() { return MakeCamera(200, 150, 170.0f, RotationY(-0.12f), Vec3{0.4f, 0.05f, 0.02f}); }
+inline Camera Source() {
+  return MakeCamera(200, 150, 170.0f, RotationY(-0.12f), Vec3{0.4f, 0.05f, 0.02f});
+}
 
 }  // namespace testing_cameras
 }  // namespace core

@@ -1,4 +1,4 @@
-#include "option_check.h"
+#include "options/option_check.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "option_parser.h"
+#include "options/option_parser.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

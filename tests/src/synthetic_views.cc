@@ -1,9 +1,9 @@
-#include "synthetic_views.h"
+#include "tests/src/synthetic_views.h"
 
 #include <cmath>
 #include <string>
 
-#include "core/rng.h"
+#include "core/math/rng.h"
 
 namespace msp {
 namespace testing_support {
@@ -47,8 +47,8 @@ core::Camera MakeTestCamera(int width, int height, core::Vec3 center) {
   return cam;
 }
 
-std::vector<View> RenderFrontoParallelPlane(int width, int height, int num_views,
-                                            float plane_depth, float baseline) {
+std::vector<View> RenderFrontoParallelPlane(int width, int height, int num_views, float plane_depth,
+                                            float baseline) {
   std::vector<View> views;
   for (int v = 0; v < num_views; ++v) {
     core::Vec3 center{0.0f, 0.0f, 0.0f};
@@ -63,7 +63,8 @@ std::vector<View> RenderFrontoParallelPlane(int width, int height, int num_views
     view.color = DenseMap(width, height, 3);
     for (int r = 0; r < height; ++r) {
       for (int c = 0; c < width; ++c) {
-        const core::Vec3 ray = core::ViewRay(view.camera, static_cast<float>(c), static_cast<float>(r));
+        const core::Vec3 ray =
+            core::ViewRay(view.camera, static_cast<float>(c), static_cast<float>(r));
         // Camera frame is the world frame shifted by the centre (R = I).
         const float X = center.x + ray.x * plane_depth;
         const float Y = center.y + ray.y * plane_depth;

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "mvs_input.h"
+#include "base/mvs_input.h"
 
 namespace msp {
 namespace testing_support {
@@ -12,8 +12,8 @@ namespace testing_support {
 // +z) seeing the plane z = plane_depth covered with smooth random texture
 // (grey, and a colour image whose hue follows the grey value).
 // Sources sit on a circle of radius `baseline` in the z = 0 plane.
-std::vector<View> RenderFrontoParallelPlane(int width, int height, int num_views,
-                                            float plane_depth, float baseline);
+std::vector<View> RenderFrontoParallelPlane(int width, int height, int num_views, float plane_depth,
+                                            float baseline);
 
 core::Camera MakeTestCamera(int width, int height, core::Vec3 center);
 

@@ -1,8 +1,8 @@
-#include "evaluate_cloud.h"
+#include "tools/evaluate_cloud.h"
 
 #include <gtest/gtest.h>
 
-#include "point_grid.h"
+#include "tools/point_grid.h"
 
 namespace msp {
 namespace eval {

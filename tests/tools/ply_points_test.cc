@@ -1,11 +1,11 @@
-#include "ply_points.h"
+#include "tools/ply_points.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <fstream>
 
-#include "errors.h"
+#include "colmap_ext/errors.h"
 
 namespace msp {
 namespace eval {

@@ -1,0 +1,31 @@
+#include "integration/scene/gt_maps.h"
+
+#include "colmap_ext/dense_map_io.h"
+#include "colmap_ext/errors.h"
+#include "tools/evaluate_ground_truth.h"
+
+namespace msp {
+namespace scene {
+
+int WriteGroundTruthMaps(const GroundTruthMapOptions& options) {
+  if (options.workspace.empty()) throw InputError("--workspace is required");
+  if (!(options.depth_scale > 0.0)) throw InputError("--scale must be positive");
+  if (options.input_type != "geometric" && options.input_type != "photometric") {
+    throw InputError("--input_type must be geometric or photometric, not " + options.input_type);
+  }
+  const std::string gt_dir =
+      options.ground_truth.empty() ? options.workspace + "/ground_truth" : options.ground_truth;
+  const eval::GroundTruthInfo info = eval::ReadGroundTruthInfo(gt_dir);
+  for (const std::string& name : info.image_names) {
+    DenseMap depth = ReadDenseMap(info.DepthMapPath(name));
+    for (float& d : depth.data) d = static_cast<float>(d * options.depth_scale);
+    const std::string suffix = name + "." + options.input_type + ".bin";
+    WriteDenseMap(options.workspace + "/stereo/depth_maps/" + suffix, depth);
+    WriteDenseMap(options.workspace + "/stereo/normal_maps/" + suffix,
+                  ReadDenseMap(info.NormalMapPath(name)));
+  }
+  return static_cast<int>(info.image_names.size());
+}
+
+}  // namespace scene
+}  // namespace msp

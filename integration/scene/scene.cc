@@ -1,0 +1,153 @@
+#include "integration/scene/scene.h"
+
+#include <limits>
+
+#include "integration/scene/shapes.h"
+
+namespace msp {
+namespace scene {
+namespace {
+
+// Materials of MakeRoomScene, by index.
+enum MaterialId : int {
+  kWall = 0,
+  kFloor,
+  kCeiling,
+  kChecker,
+  kNoise,
+  kStripes,
+  kPoster,
+  kNumMaterials
+};
+
+Material Plain(const Eigen::Vector3d& albedo, double variation) {
+  Material m;
+  m.texture = Texture::kPlain;
+  m.albedo1 = albedo;
+  m.variation = variation;
+  m.textureless = true;
+  return m;
+}
+
+Material Textured(Texture texture, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
+                  double scale) {
+  Material m;
+  m.texture = texture;
+  m.albedo1 = a1;
+  m.albedo2 = a2;
+  m.scale = scale;
+  return m;
+}
+
+Shape Box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, int material) {
+  Shape s;
+  s.type = ShapeType::kBox;
+  s.lo = lo;
+  s.hi = hi;
+  s.material = material;
+  return s;
+}
+
+}  // namespace
+
+Eigen::Vector3d RoomSize() { return Eigen::Vector3d(5.0, 5.0, 2.6); }
+
+Scene MakeRoomScene() {
+  Scene scene;
+  scene.materials.resize(kNumMaterials);
+  // Walls, floor and ceiling vary by only 1-3 % over metres: well below what
+  // an 11x11 NCC window can lock on to once camera noise is added.
+  scene.materials[kWall] = Plain({0.78, 0.76, 0.72}, 0.02);
+  scene.materials[kFloor] = Plain({0.52, 0.48, 0.43}, 0.03);
+  scene.materials[kCeiling] = Plain({0.85, 0.85, 0.84}, 0.01);
+  scene.materials[kChecker] =
+      Textured(Texture::kChecker, {0.85, 0.25, 0.15}, {0.95, 0.92, 0.85}, 0.12);
+  scene.materials[kNoise] = Textured(Texture::kNoise, {0.15, 0.35, 0.7}, {0.9, 0.85, 0.6}, 0.05);
+  scene.materials[kStripes] = Textured(Texture::kStripes, {0.2, 0.6, 0.25}, {0.9, 0.9, 0.85}, 0.06);
+  scene.materials[kPoster] = Textured(Texture::kNoise, {0.1, 0.1, 0.1}, {0.9, 0.7, 0.3}, 0.03);
+
+  Shape room;
+  room.type = ShapeType::kRoom;
+  room.lo = Eigen::Vector3d::Zero();
+  room.hi = RoomSize();
+  const int faces[kNumRoomFaces] = {kWall, kWall, kWall, kWall, kFloor, kCeiling};
+  for (int f = 0; f < kNumRoomFaces; ++f) room.face_material[f] = faces[f];
+  scene.shapes.push_back(room);
+
+  // Textured objects on the floor near the corner.
+  scene.shapes.push_back(Box({0.7, 1.5, 0.0}, {1.3, 2.1, 0.55}, kChecker));
+  Shape sphere;
+  sphere.type = ShapeType::kSphere;
+  sphere.center = {1.9, 0.8, 0.35};
+  sphere.radius = 0.35;
+  sphere.material = kNoise;
+  scene.shapes.push_back(sphere);
+  Shape cylinder;
+  cylinder.type = ShapeType::kCylinder;
+  cylinder.center = {0.55, 0.55, 0.0};
+  cylinder.radius = 0.22;
+  cylinder.lo = {0.0, 0.0, 0.0};
+  cylinder.hi = {0.0, 0.0, 1.1};
+  cylinder.material = kStripes;
+  scene.shapes.push_back(cylinder);
+  // A thin textured poster on the x = 0 wall.
+  scene.shapes.push_back(Box({0.0, 1.3, 1.2}, {0.012, 2.0, 1.75}, kPoster));
+
+  // Camouflage: boxes painted like the surface behind them, so their depth
+  // edges have (almost) the same colour on both sides, and a low platform
+  // painted like the floor.
+  scene.shapes.push_back(Box({0.0, 2.5, 0.0}, {0.4, 3.2, 1.3}, kWall));
+  scene.shapes.push_back(Box({2.6, 0.0, 0.0}, {3.3, 0.45, 0.9}, kWall));
+  scene.shapes.push_back(Box({2.0, 1.8, 0.0}, {2.8, 2.6, 0.12}, kFloor));
+
+  // Light near the ceiling above the cameras: smooth shading gradients over
+  // the walls, no shadows (they would add texture to the floor).
+  scene.light.position = {3.5, 3.0, 2.4};
+  scene.light.diffuse = 0.6;
+  scene.light.ambient = 0.35;
+  return scene;
+}
+
+bool Scene::Intersect(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, Hit* hit,
+                      double min_t) const {
+  double best = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d best_n = Eigen::Vector3d::Zero();
+  int best_material = -1;
+  for (const Shape& shape : shapes) {
+    double t = 0.0;
+    Eigen::Vector3d n;
+    bool ok = false;
+    int material = shape.material;
+    switch (shape.type) {
+      case ShapeType::kRoom: {
+        int face = 0;
+        ok = IntersectRoom(shape, origin, dir, min_t, &t, &n, &face);
+        if (ok) material = shape.face_material[face];
+        break;
+      }
+      case ShapeType::kBox:
+        ok = IntersectBox(shape, origin, dir, min_t, &t, &n);
+        break;
+      case ShapeType::kSphere:
+        ok = IntersectSphere(shape, origin, dir, min_t, &t, &n);
+        break;
+      case ShapeType::kCylinder:
+        ok = IntersectCylinder(shape, origin, dir, min_t, &t, &n);
+        break;
+    }
+    if (ok && t < best) {
+      best = t;
+      best_n = n;
+      best_material = material;
+    }
+  }
+  if (best_material < 0) return false;
+  hit->t = best;
+  hit->point = origin + best * dir;
+  hit->normal = best_n;
+  hit->material = best_material;
+  return true;
+}
+
+}  // namespace scene
+}  // namespace msp

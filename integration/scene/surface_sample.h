@@ -1,0 +1,42 @@
+// A dense, roughly uniform sample of the surface seen by at least one view,
+// with the number of views that see each sample: the reference for the
+// evaluator's point-cloud accuracy and completeness.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "integration/scene/camera_rig.h"
+#include "integration/scene/renderer.h"
+#include "integration/scene/scene.h"
+
+namespace msp {
+namespace scene {
+
+// 1 cm: finer than a pixel's footprint at the views' distances (~0.5-1 cm
+// here is what one pixel covers), coarse enough to keep the sample small.
+constexpr double kSurfaceSampleSpacing = 0.01;
+
+struct SurfaceSample {
+  std::vector<Eigen::Vector3f> points;   // world
+  std::vector<Eigen::Vector3f> normals;  // world, unit
+  std::vector<uint8_t> num_views;        // views that see the point (in image, unoccluded)
+  Eigen::Vector3d bbox_min = Eigen::Vector3d::Zero();
+  Eigen::Vector3d bbox_max = Eigen::Vector3d::Zero();
+  double Extent() const { return (bbox_max - bbox_min).norm(); }
+};
+
+// Back-projects every pixel of every rendered view (its ground-truth depth and
+// normal), keeps the first point per `spacing` voxel in view / row / column
+// order, then counts visibility in all views by ray casting.
+SurfaceSample SampleVisibleSurface(const Scene& scene, const std::vector<PinholeView>& views,
+                                   const std::vector<RenderedView>& rendered,
+                                   double spacing = kSurfaceSampleSpacing);
+
+// Binary little-endian PLY: float x y z nx ny nz, uchar num_views.
+void WriteSurfacePly(const std::string& path, const SurfaceSample& sample);
+
+}  // namespace scene
+}  // namespace msp

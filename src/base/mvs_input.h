@@ -1,0 +1,33 @@
+// What the stereo back-ends consume: views (camera + images at the working
+// resolution) and problems (a reference view, its source views and its depth
+// range). colmap_ext fills these from a workspace; nothing here knows files.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "base/dense_map.h"
+#include "core/math/camera.h"
+#include "prior/label_layers.h"
+
+namespace msp {
+
+struct View {
+  std::string name;     // image name as in the sparse model, e.g. "sub/a.jpg"
+  core::Camera camera;  // intrinsics scaled to the working resolution
+  DenseMap gray;        // 1 channel, values in [0, 1], camera.width x camera.height
+  DenseMap color;       // 3 channels RGB in [0, 1], same size (segmentation prior)
+  // Segmentation mask layers of the prior at the working resolution, read by
+  // colmap_ext for reference views; kEmbeddedSegmenter (layers empty) = the
+  // prior segments `color` itself at every round's resolution.
+  ImageLabelLayers mask_layers;
+};
+
+struct Problem {
+  int ref = -1;           // index into the views
+  std::vector<int> srcs;  // indices into the views, best first
+  float depth_min = 0.0f;
+  float depth_max = 0.0f;
+};
+
+}  // namespace msp

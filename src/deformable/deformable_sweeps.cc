@@ -1,0 +1,196 @@
+#include "deformable/deformable_sweeps.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <utility>
+
+#include "base/parallel_for.h"
+#include "base/seconds_since.h"
+#include "core/deformable/deformable_update.h"
+#include "core/deformable/refine_and_classify.h"
+#include "deformable/anchor_pair_cache.h"
+#include "deformable/nearest_reliable.h"
+
+namespace msp {
+namespace {
+
+// Anchor RANSAC draws get their own streams: the seed is salted so they never
+// coincide with the propagation / refinement streams of the same pixel.
+constexpr uint32_t kAnchorSeedSalt = 0xA5C1D3E7u;
+
+static_assert(core::kMaxAnchors <= core::kMaxPriorAnchors,
+              "every anchor of a pixel fits the prior's anchor subsets");
+
+// Pixel p's anchors as the segmentation prior reads them.
+core::PriorAnchors ToPriorAnchors(const core::Camera& cam, const core::AnchorSet& set,
+                                  const float* depth, int width, int col, int row) {
+  core::PriorAnchors out;
+  out.col = col;
+  out.row = row;
+  out.count = set.count;
+  for (int k = 0; k < set.count; ++k) {
+    out.cols[k] = set.cols[k];
+    out.rows[k] = set.rows[k];
+    out.points[k] =
+        core::BackProject(cam, static_cast<float>(set.cols[k]), static_cast<float>(set.rows[k]),
+                          depth[set.rows[k] * width + set.cols[k]]);
+  }
+  return out;
+}
+
+// The class `classify(col, row)` of every pixel, rows in parallel.
+template <typename ClassifyFn>
+std::vector<uint8_t> PixelClasses(const core::PassParams& params, int num_threads,
+                                  ClassifyFn classify) {
+  const int width = params.state.width;
+  std::vector<uint8_t> classes(static_cast<size_t>(width) * params.state.height);
+  ParallelFor(0, params.state.height, num_threads, [&](int row) {
+    for (int col = 0; col < width; ++col) {
+      classes[static_cast<size_t>(row) * width + col] = classify(col, row);
+    }
+  });
+  return classes;
+}
+
+}  // namespace
+
+ReliabilityMaps ClassifyState(const core::PassParams& params, const core::ReliabilityParams& rp,
+                              int num_threads) {
+  std::vector<uint8_t> classes = PixelClasses(params, num_threads, [&](int col, int row) {
+    return core::ClassifyPixel(params, col, row, rp);
+  });
+  return MakeReliabilityMaps(std::move(classes), params.state.width, params.state.height,
+                             num_threads);
+}
+
+std::vector<uint8_t> LocalRefineAndClassifyState(const core::PassParams& params,
+                                                 const core::ReliabilityParams& rp,
+                                                 int num_threads) {
+  return PixelClasses(params, num_threads, [&](int col, int row) {
+    return core::LocalRefineAndClassifyPixel(params, col, row, rp);
+  });
+}
+
+ReliabilityMaps MakeReliabilityMaps(std::vector<uint8_t> classes, int width, int height,
+                                    int num_threads) {
+  if (classes.size() != static_cast<size_t>(width) * height) {
+    throw std::logic_error("reliability classes and pixel state differ in size");
+  }
+  ReliabilityMaps maps;
+  maps.width = width;
+  maps.height = height;
+  maps.classes = std::move(classes);
+  for (uint8_t c : maps.classes) {
+    maps.num_reliable += c == core::kReliable;
+    maps.num_unreliable += c == core::kUnreliable;
+  }
+  maps.nearest = NearestReliablePixels(maps.classes.data(), width, height, num_threads);
+  return maps;
+}
+
+DeformableStats RunDeformableCheckerboardIterations(
+    const core::PassParams& params, const ReliabilityMaps& maps, const DeformableSettings& settings,
+    int num_iterations, int num_threads, DeformableBuffers* buffers,
+    std::vector<core::PriorAnchors>* prior_anchors) {
+  const core::PixelStateView& s = params.state;
+  const int width = s.width, height = s.height;
+  const size_t n = static_cast<size_t>(width) * height;
+  // Slots of the unreliable pixels in the anchor array.
+  std::vector<int>& slot = buffers->slot;
+  slot.assign(n, -1);
+  int num_slots = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (maps.classes[i] == core::kUnreliable) slot[i] = num_slots++;
+  }
+  std::vector<core::AnchorSet>& anchors = buffers->anchors;
+  std::vector<core::AnchorHits>& hits = buffers->hits;
+  anchors.resize(num_slots);
+  hits.resize(num_slots);
+  std::vector<float>& depth = buffers->depth;
+  std::vector<float>& normal = buffers->normal;
+  depth.resize(n);  // sized before the views below take their addresses
+  normal.resize(3 * n);
+  const core::PlaneMapView planes{depth.data(), normal.data(), width, height};
+  const core::AnchorMaps anchor_maps{
+      maps.classes.data(), maps.nearest.data(),  depth.data(), width, height,
+      settings.edges,      settings.nearest_edge};
+  if (buffers->caches == nullptr || buffers->caches->num_views() != params.num_src) {
+    buffers->caches = std::make_unique<AnchorPairCachePool>(params.num_src);
+  }
+  AnchorPairCachePool& caches = *buffers->caches;
+  // The anchored pixels of each row in the first iteration, then the first
+  // entry of each row among them: the prior's anchors are filled in parallel.
+  std::vector<int>& row_start = buffers->row_start;
+  row_start.assign(height + 1, 0);
+  DeformableStats stats;
+  for (int iteration = 0; iteration < num_iterations; ++iteration) {
+    caches.ClearAll();
+    std::copy(s.depth, s.depth + n, depth.begin());
+    std::copy(s.normal, s.normal + 3 * n, normal.begin());
+    std::atomic<long long> anchored{0};
+    const auto anchors_start = std::chrono::steady_clock::now();
+    ParallelFor(0, height, num_threads, [&](int row) {
+      int count = 0;
+      for (int col = 0; col < width; ++col) {
+        const int i = row * width + col;
+        if (slot[i] < 0) continue;
+        core::Rng rng =
+            core::MakeRng(core::RngKey(params.seed ^ kAnchorSeedSalt, params.image_id,
+                                       params.pass_id, iteration, static_cast<uint32_t>(i)));
+        core::AnchorHits& cast = hits[slot[i]];
+        if (iteration == 0 || !core::HitsStillValid(anchor_maps, cast)) {
+          core::CastAnchorHits(anchor_maps, col, row, settings.anchors, &cast);
+        }
+        core::FitAnchors(params.ref_camera, anchor_maps, col, row, settings.anchors, cast, &rng,
+                         &anchors[slot[i]]);
+        count += anchors[slot[i]].count > 0;
+      }
+      anchored += count;
+      if (iteration == 0) row_start[row + 1] = count;
+    });
+    stats.anchored_updates += anchored;
+    stats.anchor_seconds += SecondsSince(anchors_start);
+    if (iteration == 0 && prior_anchors != nullptr) {
+      for (int row = 0; row < height; ++row) row_start[row + 1] += row_start[row];
+      prior_anchors->resize(row_start[height]);
+      ParallelFor(0, height, num_threads, [&](int row) {
+        int entry = row_start[row];
+        for (int col = 0; col < width; ++col) {
+          const int i = row * width + col;
+          if (slot[i] < 0 || anchors[slot[i]].count == 0) continue;
+          (*prior_anchors)[entry++] =
+              ToPriorAnchors(params.ref_camera, anchors[slot[i]], depth.data(), width, col, row);
+        }
+      });
+    }
+    const auto sweep_start = std::chrono::steady_clock::now();
+    for (int color = 0; color < 2; ++color) {
+      // Tasks of a few rows each: a cache then serves consecutive rows, whose
+      // pixels share most of their anchors.
+      constexpr int kRowsPerTask = 8;
+      ParallelFor(0, (height + kRowsPerTask - 1) / kRowsPerTask, num_threads, [&](int task) {
+        AnchorPairCache* cache = caches.Acquire();
+        const CachedAnchorSums anchor_sums(params, planes, settings.cost, cache);
+        const int end = std::min(height, (task + 1) * kRowsPerTask);
+        for (int row = task * kRowsPerTask; row < end; ++row) {
+          for (int col = (row + color) & 1; col < width; col += 2) {
+            const int k = slot[row * width + col];
+            if (k >= 0 && anchors[k].count > 0) {
+              core::DeformableUpdatePixel(params, col, row, iteration, anchors[k], planes,
+                                          settings.cost, anchor_sums);
+            } else {
+              core::UpdatePixel(params, col, row, iteration);
+            }
+          }
+        }
+        caches.Release(cache);
+      });
+    }
+    stats.sweep_seconds += SecondsSince(sweep_start);
+  }
+  return stats;
+}
+
+}  // namespace msp

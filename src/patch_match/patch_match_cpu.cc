@@ -1,0 +1,425 @@
+#include "patch_match/patch_match_cpu.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <set>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "base/parallel_for.h"
+#include "base/seconds_since.h"
+#include "core/patch_match/output_filter.h"
+#include "deformable/deformable_sweeps.h"
+#include "deformable/nearest_reliable.h"
+#include "patch_match/image_pyramid.h"
+#include "patch_match/state_cache.h"
+#include "patch_match/sweeps.h"
+#include "prior/prior_driver.h"
+
+namespace msp {
+namespace {
+
+// APD schedule: 3 red-black iterations per pass, 3 geometric passes per round.
+constexpr int kIterationsPerPass = 3;
+constexpr int kNumGeometricPasses = 3;
+// Refinement perturbation: +-2% depth, +-1.8 degrees of normal (ACMM).
+constexpr float kPerturbDepth = 0.02f;
+constexpr float kPerturbNormalDegrees = 1.8f;
+constexpr float kDegreesToRadians = 3.14159265358979f / 180.0f;
+constexpr double kBytesPerGigabyte = 1024.0 * 1024.0 * 1024.0;
+// Pass ids inside a round; rounds are spaced so (round, pass) pairs are unique.
+constexpr uint32_t kPassesPerRoundStride = 8;
+
+// Images and cameras of every processed view at one pyramid level; colour
+// only for reference views, and only when the segmentation prior runs.
+struct Level {
+  std::map<int, DenseMap> gray;
+  std::map<int, DenseMap> color;
+  std::map<int, core::Camera> cameras;
+};
+
+// Problems that still need work, plus every problem whose state they read in
+// geometric passes (the passes are Jacobi, so this is a closure).
+std::vector<int> ProblemsToRun(const std::vector<Problem>& problems, const MapSink& sink) {
+  std::map<int, int> problem_of_view;
+  for (size_t k = 0; k < problems.size(); ++k)
+    problem_of_view[problems[k].ref] = static_cast<int>(k);
+  std::set<int> needed;
+  std::vector<int> stack;
+  for (size_t k = 0; k < problems.size(); ++k) {
+    if (!sink.HasFinalOutput(problems[k].ref)) stack.push_back(static_cast<int>(k));
+  }
+  while (!stack.empty()) {
+    const int k = stack.back();
+    stack.pop_back();
+    if (!needed.insert(k).second) continue;
+    for (int src : problems[k].srcs) {
+      auto it = problem_of_view.find(src);
+      if (it != problem_of_view.end()) stack.push_back(it->second);
+    }
+  }
+  return std::vector<int>(needed.begin(), needed.end());
+}
+
+core::NccParams MakeNccParams(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp) {
+  core::NccParams ncc;
+  ncc.window_radius = pm.window_radius;
+  ncc.window_step = msp.window_step;
+  ncc.bilateral = msp.bilateral_ncc ? 1 : 0;
+  const double sigma_spatial = pm.sigma_spatial > 0 ? pm.sigma_spatial : pm.window_radius;
+  ncc.sigma_spatial = static_cast<float>(sigma_spatial);
+  ncc.sigma_color = static_cast<float>(pm.sigma_color);
+  return ncc;
+}
+
+class CpuRunner {
+ public:
+  CpuRunner(const std::vector<View>& views, const std::vector<Problem>& problems,
+            const PatchMatchStereoOptions& pm, const MspStereoOptions& msp,
+            const std::string& scratch_dir, MapSink& sink)
+      : views_(views),
+        problems_(problems),
+        pm_(pm),
+        msp_(msp),
+        sink_(sink),
+        threads_(ResolveNumThreads(msp.num_threads)),
+        cache_(static_cast<size_t>(pm.cache_size * kBytesPerGigabyte), scratch_dir) {
+    // The prior confines anchors, so it only runs with deformable patches.
+    if (msp.deformable && msp.segmentation_prior)
+      prior_.reset(new PriorDriver(views, msp, threads_));
+  }
+
+  void Run() {
+    run_ = ProblemsToRun(problems_, sink_);
+    if (run_.empty()) {
+      std::printf("All %zu reference images already have their outputs; nothing to do.\n",
+                  problems_.size());
+      return;
+    }
+    int max_w = 0, max_h = 0;
+    for (int k : run_) {
+      for (int v : ViewsOf(problems_[k])) {
+        max_w = std::max(max_w, views_[v].camera.width);
+        max_h = std::max(max_h, views_[v].camera.height);
+      }
+    }
+    const int num_rounds = 1 + NumHalvings(max_w, max_h, msp_.coarsest_image_size);
+    std::printf("CPU back-end: %zu problems, %d round(s), %d thread(s)\n", run_.size(), num_rounds,
+                threads_);
+    start_ = std::chrono::steady_clock::now();
+    for (int round = 0; round < num_rounds; ++round) RunRound(round, num_rounds);
+    if (prior_ != nullptr) {
+      std::printf("Segmentation prior: %d calls, %.2f s, %.1f%% of the %.2f s of the passes\n",
+                  prior_->NumCalls(), prior_->TotalSeconds(),
+                  100.0 * prior_->TotalSeconds() / std::max(Elapsed(), 1e-9), Elapsed());
+    }
+  }
+
+ private:
+  std::vector<int> ViewsOf(const Problem& problem) const {
+    std::vector<int> v = problem.srcs;
+    v.push_back(problem.ref);
+    return v;
+  }
+
+  Level BuildLevel(int halvings) const {
+    Level level;
+    std::set<int> used;
+    for (int k : run_) {
+      for (int v : ViewsOf(problems_[k])) used.insert(v);
+    }
+    for (int v : used) {
+      DenseMap gray = views_[v].gray;
+      core::Camera camera = views_[v].camera;
+      for (int h = 0; h < halvings; ++h) {
+        gray = DownsampleHalf(gray);
+        camera = HalveCamera(camera, gray.width, gray.height);
+      }
+      level.gray.emplace(v, std::move(gray));
+      level.cameras.emplace(v, camera);
+    }
+    if (prior_ != nullptr) {
+      for (int k : run_) {
+        const View& view = views_[problems_[k].ref];
+        if (view.color.channels != 3 || view.color.width != view.gray.width ||
+            view.color.height != view.gray.height) {
+          throw std::invalid_argument("view " + view.name +
+                                      ": the segmentation prior needs its RGB image");
+        }
+        DenseMap color = view.color;
+        for (int h = 0; h < halvings; ++h) color = DownsampleHalf(color);
+        level.color.emplace(problems_[k].ref, std::move(color));
+      }
+    }
+    return level;
+  }
+
+  core::PassParams MakeParams(const Level& level, const Problem& problem, bool geometric,
+                              uint32_t pass_id, const std::map<int, DenseMap>& prev_depth,
+                              PixelState& state) const {
+    core::PassParams p{};
+    p.ref_camera = level.cameras.at(problem.ref);
+    const DenseMap& ref = level.gray.at(problem.ref);
+    p.ref_image = core::ImageView{ref.data.data(), ref.width, ref.height, ref.width};
+    p.num_src = std::min<int>(static_cast<int>(problem.srcs.size()), core::kMaxSourceViews);
+    for (int j = 0; j < p.num_src; ++j) {
+      const int v = problem.srcs[j];
+      core::SourceView& s = p.src[j];
+      s.camera = level.cameras.at(v);
+      s.rel = core::ComputeRelativePose(p.ref_camera, s.camera);
+      const DenseMap& img = level.gray.at(v);
+      s.image = core::ImageView{img.data.data(), img.width, img.height, img.width};
+      s.depth = core::ImageView{nullptr, 0, 0, 0};
+      auto it = prev_depth.find(v);
+      if (geometric && it != prev_depth.end()) {
+        s.depth = core::ImageView{it->second.data.data(), it->second.width, it->second.height,
+                                  it->second.width};
+      }
+    }
+    p.ncc = MakeNccParams(pm_, msp_);
+    p.depth_min = problem.depth_min;
+    p.depth_max = problem.depth_max;
+    p.geometric = geometric ? 1 : 0;
+    p.geom_lambda = static_cast<float>(pm_.geom_consistency_regularizer);
+    p.geom_max_error = static_cast<float>(pm_.geom_consistency_max_cost);
+    p.num_samples = pm_.num_samples;
+    p.perturb_depth = kPerturbDepth;
+    p.perturb_normal = kPerturbNormalDegrees * kDegreesToRadians;
+    p.seed = static_cast<uint32_t>(msp_.seed);
+    p.image_id = static_cast<uint32_t>(problem.ref);
+    p.pass_id = pass_id;
+    p.state = state.View();
+    return p;
+  }
+
+  void RunRound(int round, int num_rounds) {
+    const int halvings = num_rounds - 1 - round;
+    const Level level = BuildLevel(halvings);
+    const Level* previous = coarser_.get();
+    const int num_passes = 1 + (pm_.geom_consistency ? kNumGeometricPasses : 0);
+    const bool last_round = round == num_rounds - 1;
+    if (prior_ != nullptr) prior_->StartRound();
+    for (int pass = 0; pass < num_passes; ++pass) {
+      const bool geometric = pass > 0;
+      // Jacobi: every problem reads its sources' depths as they were before this pass.
+      std::map<int, DenseMap> prev_depth;
+      if (geometric) {
+        for (int k : run_) {
+          const PixelState& s = cache_.Get(problems_[k].ref);
+          DenseMap d(s.width, s.height, 1);
+          d.data = s.depth;
+          prev_depth.emplace(problems_[k].ref, std::move(d));
+        }
+      }
+      for (size_t n = 0; n < run_.size(); ++n) {
+        const Problem& problem = problems_[run_[n]];
+        const auto t0 = std::chrono::steady_clock::now();
+        const uint32_t pass_id = static_cast<uint32_t>(round) * kPassesPerRoundStride + pass;
+        PixelState state = PrepareState(level, previous, problem, round, pass);
+        const core::PassParams params =
+            MakeParams(level, problem, geometric, pass_id, prev_depth, state);
+        if (round == 0 && pass == 0) {
+          InitializeState(params, threads_);
+        } else {
+          ScoreState(params, threads_);
+        }
+        const bool final_pass = last_round && pass == num_passes - 1;
+        const bool deformable = msp_.deformable && !(round == 0 && pass == 0);
+        // The prior's edges confine the passes after the one that made them,
+        // so none are made in the final pass.
+        const bool run_prior = prior_ != nullptr && deformable && !final_pass;
+        if (deformable) {
+          // The previous pass of this image (the last of the coarser round at a round start).
+          RunDeformableIterations(params, round, pass > 0 ? pass - 1 : num_passes - 1,
+                                  std::move(state.classes), state.edges,
+                                  run_prior ? &prior_anchors_ : nullptr);
+          state.classes.clear();
+        } else {
+          RunCheckerboardIterations(params, kIterationsPerPass, threads_);
+        }
+        const auto refine_start = std::chrono::steady_clock::now();
+        MedianFilterState(params, threads_);
+        if (msp_.deformable && pass + 1 < num_passes) {
+          // The next pass of the round starts by classifying these planes.
+          state.classes = LocalRefineAndClassifyState(params, ReliabilityAfter(pass), threads_);
+        } else {
+          LocalRefineState(params, threads_);
+        }
+        const double refine_seconds = SecondsSince(refine_start);
+        if (run_prior) RunPrior(level, problem, pass_id, round, prior_anchors_, &state);
+        const bool preview = final_pass && prior_ != nullptr && msp_.write_previews &&
+                             !sink_.HasFinalOutput(problem.ref);
+        if (last_round) WriteOutputs(params, problem, pass, num_passes);
+        if (preview) WritePreview(level, problem, state);
+        cache_.Put(problem.ref, std::move(state));
+        cache_.EnforceBudget(problem.ref);
+        const double seconds = SecondsSince(t0);
+        std::printf(
+            "Round %d/%d, %s pass %d, image %zu/%zu [%s] %dx%d: %.2f s (filter and local refine "
+            "%.2f s; elapsed %.1f s)\n",
+            round + 1, num_rounds, geometric ? "geometric" : "photometric", pass + 1, n + 1,
+            run_.size(), views_[problem.ref].name.c_str(), params.state.width, params.state.height,
+            seconds, refine_seconds, Elapsed());
+        std::fflush(stdout);
+      }
+    }
+    coarser_.reset(new Level(level));
+  }
+
+  // The classification parameters after pass `finished_pass` of a round.
+  core::ReliabilityParams ReliabilityAfter(int finished_pass) const {
+    core::ReliabilityParams reliability = core::DefaultReliabilityParams(finished_pass);
+    reliability.max_minimum_cost = static_cast<float>(msp_.reliable_max_cost);
+    reliability.single_min_cost = static_cast<float>(msp_.reliable_single_cost);
+    reliability.min_spread = static_cast<float>(msp_.reliable_min_spread);
+    return reliability;
+  }
+
+  // Deformable patch matching (algorithm.md 2): the state the previous pass
+  // left (upsampled at a round start) is classified, then unreliable pixels
+  // with anchors take the deformable update during the pass's iterations.
+  // `classes` are the classes the previous pass's local refinement computed
+  // (empty at a round start: they are computed here). With the segmentation
+  // prior, `edges` (PixelState::edges, empty until the prior first ran)
+  // confine the anchor search, and `prior_anchors` receives the anchors of
+  // the first iteration.
+  void RunDeformableIterations(const core::PassParams& params, int round, int finished_pass,
+                               std::vector<uint8_t> classes, const std::vector<uint8_t>& edges,
+                               std::vector<core::PriorAnchors>* prior_anchors) {
+    const bool classified = !classes.empty();
+    const auto classify_start = std::chrono::steady_clock::now();
+    const ReliabilityMaps maps =
+        !classified ? ClassifyState(params, ReliabilityAfter(finished_pass), threads_)
+                    : MakeReliabilityMaps(std::move(classes), params.state.width,
+                                          params.state.height, threads_);
+    const double classify_seconds = SecondsSince(classify_start);
+    DeformableSettings settings;
+    settings.anchors = core::DefaultAnchorParams(round, params.depth_max - params.depth_min,
+                                                 msp_.anchor_max_distance);
+    settings.cost = core::DefaultDeformableParams();
+    if (prior_ != nullptr && !edges.empty()) {
+      if (edges.size() != static_cast<size_t>(maps.width) * maps.height) {
+        throw std::logic_error("segmentation prior edges and pixel state differ in size");
+      }
+      // The packed bits: only kConfiningEdge confines.
+      confining_.resize(edges.size());
+      for (size_t i = 0; i < edges.size(); ++i) confining_[i] = edges[i] & kConfiningEdge;
+      settings.edges = core::BoundaryView{confining_.data(), maps.width, maps.height, maps.width};
+      nearest_edge_ = NearestMarkedPixels(confining_.data(), maps.width, maps.height, threads_);
+      settings.nearest_edge = nearest_edge_.data();
+    }
+    const DeformableStats stats = RunDeformableCheckerboardIterations(
+        params, maps, settings, kIterationsPerPass, threads_, &deformable_buffers_, prior_anchors);
+    const double pixels = static_cast<double>(maps.width) * maps.height;
+    std::printf(
+        "  reliable %.1f%%, unreliable %.1f%%, deformable updates %.1f%% of pixels; %s %.2f s, "
+        "anchor search %.2f s, sweeps %.2f s\n",
+        100.0 * maps.num_reliable / pixels, 100.0 * maps.num_unreliable / pixels,
+        100.0 * stats.anchored_updates / (pixels * kIterationsPerPass),
+        classified ? "nearest-reliable map (classes from the local refine)" : "classification",
+        classify_seconds, stats.anchor_seconds, stats.sweep_seconds);
+  }
+
+  // The prior of one image after a deformable pass (algorithm.md 3.1-3.2): its
+  // anchors of this pass and the depth the pass left give the edges that
+  // confine the following passes. The first call of an image has only the
+  // photometric pass's depth, mostly noise where the prior matters
+  // (textureless regions), so its CRF uses colour only.
+  void RunPrior(const Level& level, const Problem& problem, uint32_t pass_id, int round,
+                const std::vector<core::PriorAnchors>& anchors, PixelState* state) {
+    DenseMap depth;
+    const bool with_depth = !state->edges.empty();
+    if (with_depth) {
+      depth = DenseMap(state->width, state->height, 1);
+      depth.data = state->depth;
+    }
+    PriorPassInput input;
+    input.view = problem.ref;
+    input.color = &level.color.at(problem.ref);
+    input.depth = with_depth ? &depth : nullptr;
+    input.depth_min = problem.depth_min;
+    input.depth_max = problem.depth_max;
+    input.anchors = &anchors;
+    input.inlier_distance =
+        core::AnchorInlierThreshold(round, problem.depth_max - problem.depth_min);
+    input.pass_id = pass_id;
+    state->edges = prior_->Run(input);
+  }
+
+  void WritePreview(const Level& level, const Problem& problem, const PixelState& state) {
+    if (state.edges.empty()) {
+      std::printf("  no segmentation prior edges for %s (no deformable pass made any)\n",
+                  views_[problem.ref].name.c_str());
+    }
+    sink_.WritePriorPreview(problem.ref, level.color.at(problem.ref),
+                            UnpackEdgeBit(state.edges, kAggregatedEdge),
+                            UnpackEdgeBit(state.edges, kRefinedEdge));
+  }
+
+  // The state a problem starts a pass with: fresh (first pass overall),
+  // carried up from the coarser round, or the previous pass's.
+  PixelState PrepareState(const Level& level, const Level* previous, const Problem& problem,
+                          int round, int pass) {
+    const core::Camera& cam = level.cameras.at(problem.ref);
+    if (round == 0 && pass == 0) return PixelState(cam.width, cam.height);
+    PixelState state = cache_.Take(problem.ref);
+    if (pass == 0 && previous != nullptr) {
+      return UpsampleState(state, previous->cameras.at(problem.ref), cam);
+    }
+    return state;
+  }
+
+  void WriteOutputs(const core::PassParams& params, const Problem& problem, int pass,
+                    int num_passes) {
+    if (sink_.HasFinalOutput(problem.ref)) return;  // resumed run: keep what exists
+    const bool final_pass = pass == num_passes - 1;
+    DenseMap depth, normal;
+    if (pm_.geom_consistency && pass == 0) {
+      // As COLMAP: unfiltered photometric maps, input of the geometric stage.
+      ExtractMaps(params, nullptr, threads_, &depth, &normal);
+      sink_.Write(problem.ref, "photometric", depth, normal);
+    }
+    if (!final_pass) return;
+    core::FilterParams filter;
+    filter.min_ncc = static_cast<float>(pm_.filter_min_ncc);
+    filter.min_triangulation_angle =
+        static_cast<float>(pm_.filter_min_triangulation_angle) * kDegreesToRadians;
+    filter.min_num_consistent = std::min(pm_.filter_min_num_consistent, params.num_src);
+    filter.geom_max_error = static_cast<float>(pm_.filter_geom_consistency_max_cost);
+    ExtractMaps(params, pm_.filter ? &filter : nullptr, threads_, &depth, &normal);
+    sink_.Write(problem.ref, pm_.geom_consistency ? "geometric" : "photometric", depth, normal);
+  }
+
+  double Elapsed() const { return SecondsSince(start_); }
+
+  const std::vector<View>& views_;
+  const std::vector<Problem>& problems_;
+  const PatchMatchStereoOptions& pm_;
+  const MspStereoOptions& msp_;
+  MapSink& sink_;
+  const int threads_;
+  StateCache cache_;
+  std::vector<int> run_;
+  std::unique_ptr<Level> coarser_;
+  std::unique_ptr<PriorDriver> prior_;    // null = no segmentation prior
+  std::vector<uint8_t> confining_;        // scratch: the confining bit of the current image
+  std::vector<int> nearest_edge_;         // scratch: its nearest confining pixel of every pixel
+  DeformableBuffers deformable_buffers_;  // scratch of the deformable iterations
+  std::vector<core::PriorAnchors> prior_anchors_;  // scratch: the anchors the prior reads
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+void RunPatchMatchCpu(const std::vector<View>& views, const std::vector<Problem>& problems,
+                      const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
+                      const std::string& scratch_dir, MapSink& sink) {
+  CpuRunner(views, problems, patch_match, msp, scratch_dir, sink).Run();
+}
+
+}  // namespace msp

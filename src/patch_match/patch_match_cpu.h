@@ -1,0 +1,19 @@
+// The CPU back-end: the APD pass schedule (coarse-to-fine rounds, each one
+// photometric pass and, with geom_consistency, three geometric passes) over
+// all problems, calling the per-pixel functions of src/core.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "base/mvs_input.h"
+#include "options/stereo_options.h"
+#include "stereo.h"
+
+namespace msp {
+
+void RunPatchMatchCpu(const std::vector<View>& views, const std::vector<Problem>& problems,
+                      const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
+                      const std::string& scratch_dir, MapSink& sink);
+
+}  // namespace msp

@@ -1,0 +1,56 @@
+// Host storage of one image's per-pixel PatchMatch state: the plane (depth +
+// normal), the aggregated cost and the selected-view mask, 24 bytes per
+// pixel, plus the segmentation prior's edge map (1 byte per pixel) once the
+// prior has run for the image and the reliability classes (1 byte per pixel)
+// between the passes of a deformable round.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/patch_match/patch_match_kernel.h"
+
+namespace msp {
+
+struct PixelState {
+  int width = 0;
+  int height = 0;
+  std::vector<float> depth;   // camera z, 0 = none
+  std::vector<float> normal;  // 3 planes: nx, ny, nz
+  std::vector<float> cost;
+  std::vector<uint32_t> mask;
+  // Depth edges of the segmentation prior (bits of prior_edges.h); empty
+  // until the prior first runs. Kept here so it spills and upsamples with
+  // the planes it belongs to.
+  std::vector<uint8_t> edges;
+  // Reliability classes (core::kReliable ...) of these planes, computed at
+  // the end of a pass for the next pass of the round; empty otherwise.
+  std::vector<uint8_t> classes;
+
+  PixelState() = default;
+  PixelState(int w, int h)
+      : width(w),
+        height(h),
+        depth(static_cast<size_t>(w) * h, 0.0f),
+        normal(static_cast<size_t>(w) * h * 3, 0.0f),
+        cost(static_cast<size_t>(w) * h, core::kMaxCost),
+        mask(static_cast<size_t>(w) * h, 0u) {}
+
+  bool Empty() const { return depth.empty(); }
+  size_t Bytes() const {
+    return depth.size() * sizeof(float) + normal.size() * sizeof(float) +
+           cost.size() * sizeof(float) + mask.size() * sizeof(uint32_t) + edges.size() +
+           classes.size();
+  }
+  core::PlaneHypothesis Plane(size_t i) const {
+    const size_t n = depth.size();
+    return core::PlaneHypothesis{depth[i], core::Vec3{normal[i], normal[n + i], normal[2 * n + i]}};
+  }
+  core::PixelStateView View() {
+    return core::PixelStateView{depth.data(), normal.data(), cost.data(),
+                                mask.data(),  width,         height};
+  }
+};
+
+}  // namespace msp

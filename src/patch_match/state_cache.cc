@@ -1,0 +1,148 @@
+#include "patch_match/state_cache.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace msp {
+namespace {
+
+template <typename T>
+void WriteVector(std::ofstream& out, const std::vector<T>& v) {
+  out.write(reinterpret_cast<const char*>(v.data()),
+            static_cast<std::streamsize>(v.size() * sizeof(T)));
+}
+
+template <typename T>
+void ReadVector(std::ifstream& in, std::vector<T>* v) {
+  in.read(reinterpret_cast<char*>(v->data()), static_cast<std::streamsize>(v->size() * sizeof(T)));
+}
+
+// A per-pixel byte plane that may be empty (edges, classes): a flag, then the bytes.
+void WriteOptionalPlane(std::ofstream& out, const std::vector<uint8_t>& v) {
+  const int present = v.empty() ? 0 : 1;
+  out.write(reinterpret_cast<const char*>(&present), sizeof(present));
+  WriteVector(out, v);
+}
+
+void ReadOptionalPlane(std::ifstream& in, size_t num_pixels, std::vector<uint8_t>* v) {
+  int present = 0;
+  in.read(reinterpret_cast<char*>(&present), sizeof(present));
+  if (!present) return;
+  v->resize(num_pixels);
+  ReadVector(in, v);
+}
+
+}  // namespace
+
+StateCache::StateCache(size_t budget_bytes, std::string scratch_dir)
+    : budget_bytes_(budget_bytes), scratch_dir_(std::move(scratch_dir)) {}
+
+StateCache::~StateCache() {
+  for (const auto& entry : spilled_) std::remove(entry.second.c_str());
+}
+
+bool StateCache::Contains(int id) const { return resident_.count(id) || spilled_.count(id); }
+
+std::string StateCache::SpillPath(int id) const {
+  return scratch_dir_ + "/state-" + std::to_string(getpid()) + "-" + std::to_string(id) + ".bin";
+}
+
+void StateCache::Touch(int id) {
+  lru_.remove(id);
+  lru_.push_front(id);
+}
+
+PixelState& StateCache::Get(int id) {
+  auto it = resident_.find(id);
+  if (it == resident_.end()) {
+    auto sp = spilled_.find(id);
+    if (sp == spilled_.end()) throw std::logic_error("StateCache: unknown image state");
+    std::ifstream in(sp->second, std::ios::binary);
+    int size[2] = {0, 0};
+    in.read(reinterpret_cast<char*>(size), sizeof(size));
+    PixelState state(size[0], size[1]);
+    ReadVector(in, &state.depth);
+    ReadVector(in, &state.normal);
+    ReadVector(in, &state.cost);
+    ReadVector(in, &state.mask);
+    ReadOptionalPlane(in, state.depth.size(), &state.edges);
+    ReadOptionalPlane(in, state.depth.size(), &state.classes);
+    if (!in) throw std::runtime_error("cannot read spilled state " + sp->second);
+    std::remove(sp->second.c_str());
+    spilled_.erase(sp);
+    resident_bytes_ += state.Bytes();
+    it = resident_.emplace(id, std::move(state)).first;
+  }
+  Touch(id);
+  return it->second;
+}
+
+PixelState StateCache::Take(int id) {
+  PixelState state = std::move(Get(id));
+  auto it = resident_.find(id);
+  resident_bytes_ -= state.Bytes();
+  resident_.erase(it);
+  lru_.remove(id);
+  return state;
+}
+
+void StateCache::Put(int id, PixelState state) {
+  auto sp = spilled_.find(id);
+  if (sp != spilled_.end()) {
+    std::remove(sp->second.c_str());
+    spilled_.erase(sp);
+  }
+  auto it = resident_.find(id);
+  if (it != resident_.end()) {
+    resident_bytes_ -= it->second.Bytes();
+    resident_.erase(it);
+  }
+  resident_bytes_ += state.Bytes();
+  resident_.emplace(id, std::move(state));
+  Touch(id);
+}
+
+void StateCache::Spill(int id) {
+  auto it = resident_.find(id);
+  if (it == resident_.end()) return;
+  mkdir(scratch_dir_.c_str(), 0755);
+  const std::string path = SpillPath(id);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  const int size[2] = {it->second.width, it->second.height};
+  out.write(reinterpret_cast<const char*>(size), sizeof(size));
+  WriteVector(out, it->second.depth);
+  WriteVector(out, it->second.normal);
+  WriteVector(out, it->second.cost);
+  WriteVector(out, it->second.mask);
+  WriteOptionalPlane(out, it->second.edges);
+  WriteOptionalPlane(out, it->second.classes);
+  if (!out) throw std::runtime_error("cannot spill state to " + path + " (disk full?)");
+  resident_bytes_ -= it->second.Bytes();
+  resident_.erase(it);
+  spilled_[id] = path;
+  lru_.remove(id);
+  ++num_spills_;
+}
+
+void StateCache::EnforceBudget(int keep) {
+  while (resident_bytes_ > budget_bytes_) {
+    int victim = -1;
+    for (auto it = lru_.rbegin(); it != lru_.rend(); ++it) {
+      if (*it != keep) {
+        victim = *it;
+        break;
+      }
+    }
+    if (victim < 0) return;  // only `keep` is resident: it must stay
+    Spill(victim);
+  }
+}
+
+}  // namespace msp

@@ -1,0 +1,94 @@
+#include "prior/prior_driver.h"
+
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+
+#include "base/seconds_since.h"
+#include "prior/multiscale_segmentation.h"
+
+namespace msp {
+namespace {
+
+double EdgeShare(const std::vector<uint8_t>& packed) {
+  if (packed.empty()) return 0.0;
+  size_t count = 0;
+  for (uint8_t bits : packed) count += (bits & kConfiningEdge) != 0;
+  return static_cast<double>(count) / packed.size();
+}
+
+}  // namespace
+
+std::vector<uint8_t> PackPriorEdges(const SegmentationPriorResult& result) {
+  std::vector<uint8_t> packed(result.edges.size(), 0);
+  for (size_t i = 0; i < packed.size(); ++i) {
+    uint8_t bits = result.edges[i] ? kConfiningEdge : 0;
+    if (!result.aggregated.edges.empty() && result.aggregated.edges[i]) bits |= kAggregatedEdge;
+    if (!result.refined.edges.empty() && result.refined.edges[i]) bits |= kRefinedEdge;
+    packed[i] = bits;
+  }
+  return packed;
+}
+
+std::vector<uint8_t> UnpackEdgeBit(const std::vector<uint8_t>& packed, uint8_t bit) {
+  std::vector<uint8_t> map(packed.size());
+  for (size_t i = 0; i < packed.size(); ++i) map[i] = (packed[i] & bit) ? 1 : 0;
+  return map;
+}
+
+PriorDriver::PriorDriver(const std::vector<View>& views, const MspStereoOptions& options,
+                         int num_threads)
+    : views_(views), options_(options) {
+  options_.num_threads = num_threads;
+}
+
+void PriorDriver::StartRound() { round_layers_.clear(); }
+
+const LabelLayers& PriorDriver::Layers(int view, const DenseMap& color) {
+  auto it = round_layers_.find(view);
+  if (it != round_layers_.end()) return it->second;
+  const ImageLabelLayers& given = views_[view].mask_layers;
+  const bool from_files = given.source == LabelSource::kMaskFiles && !given.layers.levels.empty();
+  LabelLayers layers = from_files ? ResampleNearest(given.layers, color.width, color.height)
+                                  : SegmentMultiscale(color, options_.num_mask_levels);
+  if (logged_source_.insert(view).second) {
+    std::printf("  segmentation prior of %s: %d label layers from the %s\n",
+                views_[view].name.c_str(), layers.NumLevels(),
+                from_files ? "mask files" : "embedded segmenter");
+  }
+  return round_layers_.emplace(view, std::move(layers)).first->second;
+}
+
+std::vector<uint8_t> PriorDriver::Run(const PriorPassInput& input) {
+  if (input.color == nullptr || input.color->channels != 3 || input.anchors == nullptr) {
+    throw std::logic_error("PriorDriver::Run: the prior needs the colour image and the anchors");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const LabelLayers& layers = Layers(input.view, *input.color);
+  const double layer_seconds = SecondsSince(start);
+  SegmentationPriorInput prior;
+  prior.layers = &layers;
+  prior.color = input.color;
+  prior.depth = input.depth;
+  prior.depth_min = input.depth_min;
+  prior.depth_max = input.depth_max;
+  prior.anchors = input.anchors;
+  prior.inlier_distance = input.inlier_distance;
+  prior.image = static_cast<uint32_t>(input.view);
+  prior.pass = input.pass_id;
+  const SegmentationPriorResult result = RunSegmentationPrior(prior, options_);
+  std::vector<uint8_t> packed = PackPriorEdges(result);
+  const double seconds = SecondsSince(start);
+  total_seconds_ += seconds;
+  ++num_calls_;
+  const SegmentationPriorTimes& t = result.times;
+  std::printf(
+      "  segmentation prior: %.3f s (layers %.3f, boundaries %.3f, best layers %.3f, "
+      "aggregation %.3f, CRF %.3f%s), %zu anchored pixels, edges on %.1f%% of pixels\n",
+      seconds, layer_seconds, t.boundaries_s, t.best_layers_s, t.aggregation_s, t.refinement_s,
+      options_.edge_refinement && input.depth == nullptr ? " colour only" : "",
+      input.anchors->size(), 100.0 * EdgeShare(packed));
+  return packed;
+}
+
+}  // namespace msp

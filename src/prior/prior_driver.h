@@ -1,0 +1,72 @@
+// The segmentation prior as the CPU passes use it (algorithm.md 3.1-3.2):
+// per reference image and round, the label layers at the round's resolution
+// (the user's mask layers resampled, or the embedded segmenter on the colour
+// image), and per deformable pass the prior's edges packed into one byte per
+// pixel, the form PixelState keeps them in between passes.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <set>
+#include <vector>
+
+#include "base/dense_map.h"
+#include "base/mvs_input.h"
+#include "core/prior/best_layer.h"
+#include "options/stereo_options.h"
+#include "prior/label_layers.h"
+#include "prior/segmentation_prior_pipeline.h"
+
+namespace msp {
+
+// Bits of the packed edge map (PixelState::edges).
+constexpr uint8_t kConfiningEdge = 1;   // confines anchors: refined edges, else aggregated
+constexpr uint8_t kAggregatedEdge = 2;  // B' of eq. 5, or the union of the layers (w/o Agr.)
+constexpr uint8_t kRefinedEdge = 4;     // edges of the CRF-refined labels (eq. 6)
+
+// One byte per pixel holding the three edge maps of `result`.
+std::vector<uint8_t> PackPriorEdges(const SegmentationPriorResult& result);
+
+// The 0/1 map of one bit of a packed edge map.
+std::vector<uint8_t> UnpackEdgeBit(const std::vector<uint8_t>& packed, uint8_t bit);
+
+// What one reference image's prior needs in one pass.
+struct PriorPassInput {
+  int view = -1;                    // index into the views
+  const DenseMap* color = nullptr;  // RGB at the round's resolution
+  const DenseMap* depth = nullptr;  // current depth; null = colour-only CRF
+  float depth_min = 0.0f;
+  float depth_max = 0.0f;
+  const std::vector<core::PriorAnchors>* anchors = nullptr;
+  float inlier_distance = 0.0f;  // eq. 4 RANSAC threshold (APD's anchor threshold)
+  uint32_t pass_id = 0;          // random stream of eq. 4
+};
+
+// Runs the prior for the passes; holds the current round's label layers.
+class PriorDriver {
+ public:
+  // `num_threads` is the resolved worker count (>= 1).
+  PriorDriver(const std::vector<View>& views, const MspStereoOptions& options, int num_threads);
+
+  // Drops the previous round's layers (they are at another resolution).
+  void StartRound();
+
+  // The prior of one image in one pass; returns the packed edge map at the
+  // size of input.color and logs its steps' seconds.
+  std::vector<uint8_t> Run(const PriorPassInput& input);
+
+  double TotalSeconds() const { return total_seconds_; }
+  int NumCalls() const { return num_calls_; }
+
+ private:
+  const LabelLayers& Layers(int view, const DenseMap& color);
+
+  const std::vector<View>& views_;
+  MspStereoOptions options_;  // num_threads resolved
+  std::map<int, LabelLayers> round_layers_;
+  std::set<int> logged_source_;
+  double total_seconds_ = 0.0;
+  int num_calls_ = 0;
+};
+
+}  // namespace msp

@@ -1,0 +1,375 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/cost/window_batch.h"
+#include "core/cost/window_cost.h"
+#include "core/math/rng.h"
+
+namespace msp {
+namespace core {
+namespace {
+
+constexpr int kW = 48, kH = 36;
+const NccParams kUniform{5, 2, 0, 5.0f, 0.2f};
+
+std::vector<float> Noise(uint64_t seed) {
+  std::vector<float> img(kW * kH);
+  for (int i = 0; i < kW * kH; ++i) img[i] = RandomUniform(Mix64(seed), i);
+  return img;
+}
+
+ImageView View(const std::vector<float>& img) { return ImageView{img.data(), kW, kH, kW}; }
+
+// A mild projective warp: scaled, sheared and shifted a little.
+Mat3 Warp(float shift_x, float shift_y) {
+  return Mat3{{1.03f, 0.02f, shift_x, -0.015f, 0.98f, shift_y, 2e-4f, -1e-4f, 1.0f}};
+}
+
+TEST(RefWindow, PreparedWindowIsNormalised) {
+  const std::vector<float> img = Noise(3);
+  RefWindow w;
+  PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
+  ASSERT_EQ(w.num_samples, 36);
+  EXPECT_EQ(w.textured, 1);
+  float sum = 0.0f, sum_sq = 0.0f;
+  for (int k = 0; k < w.num_samples; ++k) {
+    sum += w.value[k];
+    sum_sq += w.value[k] * w.value[k];
+  }
+  EXPECT_NEAR(sum, 0.0f, 1e-5f);
+  EXPECT_NEAR(sum_sq, 1.0f, 1e-5f);
+  // Padding lanes up to 40 repeat the centre with no weight.
+  for (int k = 36; k < 40; ++k) {
+    EXPECT_EQ(w.x[k], 20.0f);
+    EXPECT_EQ(w.y[k], 15.0f);
+    EXPECT_EQ(w.value[k], 0.0f);
+  }
+}
+
+TEST(RefWindow, BorderWindowKeepsTheSamplesInsideTheReference) {
+  const std::vector<float> img = Noise(3);
+  RefWindow w;
+  // Columns -2, 0, 2, 4, 6, 8: five of six inside; rows all inside.
+  PrepareRefWindow(View(img), 3, 15, 5, 2, 0, &w);
+  EXPECT_EQ(w.clipped, 1);
+  ASSERT_EQ(w.num_samples, 30);
+  for (int k = 0; k < w.num_samples; ++k) EXPECT_GE(w.x[k], 0.0f);
+  // The corner: columns and rows 1, 3, 5 only; the centre (0, 0) is not a sample.
+  PrepareRefWindow(View(img), 0, 0, 5, 2, 0, &w);
+  EXPECT_EQ(w.num_samples, 9);
+  PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
+  EXPECT_EQ(w.clipped, 0);
+}
+
+TEST(RefWindow, BilateralAndLargeWindowsTakeTheGeneralPath) {
+  const std::vector<float> img = Noise(3);
+  RefWindow w;
+  PrepareRefWindow(View(img), 20, 15, 5, 2, 1, &w);
+  EXPECT_EQ(w.num_samples, 0);
+  PrepareRefWindow(View(img), 20, 15, 5, 1, 0, &w);  // 121 samples
+  EXPECT_EQ(w.num_samples, 0);
+  PrepareRefWindow(View(img), 20, 15, 7, 2, 0, &w);  // 8 x 8 = 64 still fits
+  EXPECT_EQ(w.num_samples, 64);
+}
+
+// True when a sample of w warps to within a rounding margin of the source
+// border: the general and fast forms may then disagree on whether it counts.
+bool OnTheBorder(const RefWindow& w, const Mat3& H) {
+  constexpr float kMargin = 1e-3f;
+  for (int k = 0; k < w.num_samples; ++k) {
+    float u, v;
+    if (!ApplyHomography(H, w.x[k], w.y[k], &u, &v)) continue;
+    for (const float d : {u, v, u - (kW - 1.0f), v - (kH - 1.0f)}) {
+      if (std::fabs(d) < kMargin) return true;
+    }
+  }
+  return false;
+}
+
+TEST(RefWindow, CostEqualsTheGeneralNcc) {
+  const std::vector<float> ref = Noise(3);
+  const std::vector<float> src = Noise(4);
+  const std::vector<float> same = ref;
+  int fast = 0, partial = 0;
+  for (int row = 5; row < kH - 5; row += 3) {
+    for (int col = 5; col < kW - 5; col += 3) {
+      RefWindow w;
+      PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
+      // The larger shifts push windows near the borders partly out of the source.
+      for (const Mat3& H :
+           {Warp(0.3f, -0.4f), Warp(1.7f, 0.6f), Warp(-2.5f, 3.2f), Warp(-6.0f, 4.5f)}) {
+        if (OnTheBorder(w, H)) continue;
+        for (const std::vector<float>* s : {&src, &same}) {
+          const float general = NccCost(View(ref), View(*s), H, col, row, kUniform);
+          EXPECT_NEAR(WindowNccCost(w, View(ref), View(*s), H, kUniform), general, 2e-4f)
+              << col << "," << row;
+          SourceSums sums;
+          const bool whole = WindowSums(w, View(*s), H, &sums);
+          fast += whole;
+          partial += !whole && general < kMaxCost;
+        }
+      }
+    }
+  }
+  EXPECT_GT(fast, 100);    // most windows lay wholly inside the source
+  EXPECT_GT(partial, 20);  // and partial windows were compared too
+}
+
+// Windows over the reference border, and the corner, whose centre lies
+// outside its own samples: the same cost as NccCost, which skips the samples
+// outside the reference.
+TEST(RefWindow, BorderWindowCostEqualsTheGeneralNcc) {
+  const std::vector<float> ref = Noise(7);
+  const std::vector<float> src = Noise(8);
+  const std::vector<float> same = ref;
+  int compared = 0, centre_out = 0;
+  for (int row = 0; row < kH; ++row) {
+    for (int col = 0; col < kW; ++col) {
+      if (col >= 5 && row >= 5 && col < kW - 5 && row < kH - 5) continue;
+      RefWindow w;
+      PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
+      ASSERT_EQ(w.clipped, 1);
+      for (const Mat3& H : {Warp(0.3f, -0.4f), Warp(-0.6f, 0.7f), Warp(1.7f, 0.6f)}) {
+        if (OnTheBorder(w, H)) continue;
+        for (const std::vector<float>* s : {&src, &same}) {
+          const float general = NccCost(View(ref), View(*s), H, col, row, kUniform);
+          EXPECT_NEAR(WindowNccCost(w, View(ref), View(*s), H, kUniform), general, 2e-4f)
+              << col << "," << row;
+          ++compared;
+          centre_out += !CentreInSource(H, View(*s), col, row);
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 500);
+  EXPECT_GT(centre_out, 10);  // windows whose centre leaves the source were among them
+  // The corner window's samples (1, 3, 5) all land inside the source, its
+  // centre does not: the view does not see the pixel. (The vector path's
+  // padding lanes repeat the centre and would catch it; the scalar path
+  // has no padding.)
+  RefWindow corner;
+  PrepareRefWindow(View(ref), 0, 0, 5, 2, 0, &corner);
+  const Mat3 half_left_up = {{1, 0, -0.5f, 0, 1, -0.5f, 0, 0, 1}};
+  SourceSums sums;
+  ASSERT_TRUE(WindowSumsScalar(corner, View(src), half_left_up, &sums));
+  EXPECT_EQ(NccCost(View(ref), View(src), half_left_up, 0, 0, kUniform), kMaxCost);
+  EXPECT_EQ(WindowNccCost(corner, View(ref), View(src), half_left_up, kUniform), kMaxCost);
+}
+
+// The batch's costs of the window at (col, row) under the warps H in
+// `lanes`, and each warp's cost alone (kMaxCost outside `lanes`).
+void BatchAndAlone(const std::vector<float>& ref, const std::vector<float>& src, const Mat3* H,
+                   uint32_t lanes, int col, int row, RefWindow* w, float* batch, float* alone) {
+  PrepareRefWindow(View(ref), col, row, 5, 2, 0, w);
+  WindowNccCosts(*w, View(ref), View(src), H, lanes, kUniform, batch);
+  for (int l = 0; l < kWindowLanes; ++l) {
+    alone[l] =
+        ((lanes >> l) & 1u) ? WindowNccCost(*w, View(ref), View(src), H[l], kUniform) : kMaxCost;
+  }
+}
+
+// Eight warps at once, lane by lane the same cost as WindowNccCost alone:
+// windows inside the source, leaving it in part, leaving it whole, over the
+// reference border, and a lane left unused.
+TEST(RefWindow, BatchOfWarpsCostsWhatEachWarpCostsAlone) {
+  const std::vector<float> ref = Noise(11);
+  const std::vector<float> src = Noise(12);
+  const Mat3 H[kWindowLanes] = {Warp(0.3f, -0.4f), Warp(-0.6f, 0.7f), Warp(1.7f, 0.6f),
+                                Warp(9.5f, 0.2f),  Warp(-8.0f, 3.0f), Warp(60.0f, 0.0f),
+                                Warp(2.2f, -7.5f), Warp(0.0f, 0.0f)};
+  const uint32_t lanes = 0x7fu;  // lane 7 unused
+  int compared = 0, partial = 0, clipped = 0;
+  for (int row = 0; row < kH; ++row) {
+    for (int col = 0; col < kW; ++col) {
+      RefWindow w;
+      float costs[kWindowLanes], alone[kWindowLanes];
+      BatchAndAlone(ref, src, H, lanes, col, row, &w, costs, alone);
+      for (int l = 0; l < 7; ++l) {
+        EXPECT_NEAR(costs[l], alone[l], 2e-4f) << col << "," << row << " lane " << l;
+        SourceSums sums;
+        partial += !WindowSumsScalar(w, View(src), H[l], &sums) &&
+                   CentreInSource(H[l], View(src), col, row) && costs[l] < kMaxCost;
+        ++compared;
+      }
+      clipped += w.clipped;
+      EXPECT_EQ(costs[7], kMaxCost);
+    }
+  }
+  EXPECT_EQ(compared, 7 * kW * kH);
+  EXPECT_GT(partial, 500);  // partial windows with a cost were among them
+  EXPECT_GT(clipped, 500);
+  // An untextured reference window costs kMaxCost in every lane.
+  const std::vector<float> flat(kW * kH, 0.5f);
+  RefWindow w;
+  PrepareRefWindow(View(flat), 20, 15, 5, 2, 0, &w);
+  float costs[kWindowLanes];
+  WindowNccCosts(w, View(flat), View(src), H, lanes, kUniform, costs);
+  for (int l = 0; l < kWindowLanes; ++l) EXPECT_EQ(costs[l], kMaxCost);
+}
+
+// Lanes whose warps all keep the window inside the source (the batch's
+// shortcut), and such warps among others, cost what each costs alone.
+TEST(RefWindow, BatchOfWholeWarpsCostsWhatEachWarpCostsAlone) {
+  const std::vector<float> ref = Noise(13);
+  const std::vector<float> src = Noise(14);
+  Mat3 H[kWindowLanes];
+  for (int l = 0; l < kWindowLanes; ++l) H[l] = Warp(0.37f * l - 1.2f, 0.9f - 0.23f * l);
+  for (const uint32_t lanes : {0xffu, 0x5au, 0x80u}) {
+    for (int row = 0; row < kH; ++row) {
+      for (int col = 0; col < kW; ++col) {
+        RefWindow w;
+        float costs[kWindowLanes], alone[kWindowLanes];
+        BatchAndAlone(ref, src, H, lanes, col, row, &w, costs, alone);
+        for (int l = 0; l < kWindowLanes; ++l) {
+          EXPECT_NEAR(costs[l], alone[l], 2e-4f) << col << "," << row << " lane " << l;
+        }
+      }
+    }
+  }
+}
+
+TEST(RefWindow, BoxHoldsTheSamplesAndTheCentre) {
+  const std::vector<float> img = Noise(3);
+  RefWindow w;
+  PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
+  EXPECT_EQ(w.box[0], 15.0f);
+  EXPECT_EQ(w.box[1], 25.0f);
+  EXPECT_EQ(w.box[2], 10.0f);
+  EXPECT_EQ(w.box[3], 20.0f);
+  // The corner window's samples are columns and rows 1, 3, 5; its centre is (0, 0).
+  PrepareRefWindow(View(img), 0, 0, 5, 2, 0, &w);
+  EXPECT_EQ(w.box[0], 0.0f);
+  EXPECT_EQ(w.box[1], 5.0f);
+  EXPECT_EQ(w.box[2], 0.0f);
+  EXPECT_EQ(w.box[3], 5.0f);
+}
+
+#if defined(MSP_WINDOW_SUMS_AVX2)
+// WholeBoxLanes vouches for a lane only when every position of the box has
+// its support in the source, and does vouch for boxes well inside.
+TEST(RefWindow, WholeBoxLanesVouchOnlyForBoxesInside) {
+  const ImageView src{nullptr, kW, kH, kW};
+  int vouched = 0, refused = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    Mat3 H[kWindowLanes];
+    for (int l = 0; l < kWindowLanes; ++l) {
+      const uint64_t key = Mix64(1000u + trial * kWindowLanes + l);
+      const float shift_x = 50.0f * RandomUniform(key, 0) - 25.0f;
+      const float shift_y = 40.0f * RandomUniform(key, 1) - 20.0f;
+      H[l] = Warp(shift_x, shift_y);
+      H[l].m[6] = 0.04f * RandomUniform(key, 2) - 0.02f;  // strongly projective, at times behind
+      H[l].m[7] = 0.04f * RandomUniform(key, 3) - 0.02f;
+    }
+    const WarpLanes warp = MakeLaneWarps(H, 0xffu, src);
+    const float x0 = 3.0f + trial % 20, y0 = 2.0f + trial % 15;
+    const uint32_t whole = WholeBoxLanes(warp, x0, x0 + 10.0f, y0, y0 + 10.0f);
+    uint32_t inside = 0xffu;
+    for (float y = y0; y <= y0 + 10.0f; y += 0.5f) {
+      for (float x = x0; x <= x0 + 10.0f; x += 0.5f) {
+        const WarpedCells c = WarpCells(warp, _mm256_set1_ps(x), _mm256_set1_ps(y));
+        inside &= static_cast<uint32_t>(_mm256_movemask_ps(c.inside));
+      }
+    }
+    EXPECT_EQ(whole & ~inside, 0u) << "trial " << trial;
+    vouched += __builtin_popcount(whole);
+    refused += __builtin_popcount(inside & ~whole);
+  }
+  EXPECT_GT(vouched, 400);
+  EXPECT_LT(refused, vouched / 10);  // only boxes within the margin of the bounds
+}
+
+// CentreNearSourceLanes drops only lanes that WindowNccCost prices at
+// kMaxCost: their centre fails CentreInSource, and their window (unless
+// clipped) is not whole.
+TEST(RefWindow, CentreTestDropsOnlyLanesThatCostMax) {
+  const std::vector<float> ref = Noise(15);
+  const std::vector<float> src = Noise(16);
+  int dropped = 0, kept = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    Mat3 H[kWindowLanes];
+    for (int l = 0; l < kWindowLanes; ++l) {
+      const uint64_t key = Mix64(5000u + trial * kWindowLanes + l);
+      H[l] = Warp(70.0f * RandomUniform(key, 0) - 35.0f, 56.0f * RandomUniform(key, 1) - 28.0f);
+      H[l].m[6] = 0.04f * RandomUniform(key, 2) - 0.02f;  // strongly projective, at times behind
+      H[l].m[7] = 0.04f * RandomUniform(key, 3) - 0.02f;
+    }
+    const int col = trial % kW, row = (7 * trial) % kH;
+    RefWindow w;
+    PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
+    const uint32_t near = CentreNearSourceLanes(MakeLaneWarps(H, 0xffu, View(src)), col, row);
+    for (int l = 0; l < kWindowLanes; ++l) {
+      if ((near >> l) & 1u) {
+        ++kept;
+        continue;
+      }
+      ++dropped;
+      SourceSums sums;
+      EXPECT_FALSE(CentreInSource(H[l], View(src), col, row)) << "trial " << trial << " lane " << l;
+      // (A window clipped by the reference border may not hold its centre.)
+      if (!w.clipped) {
+        EXPECT_FALSE(WindowSumsScalar(w, View(src), H[l], &sums)) << "lane " << l;
+      }
+      EXPECT_EQ(WindowNccCost(w, View(ref), View(src), H[l], kUniform), kMaxCost);
+    }
+  }
+  EXPECT_GT(dropped, 300);
+  EXPECT_GT(kept, 300);
+}
+#endif
+
+TEST(RefWindow, PartialWindowNeedsItsCentreAndHalfTheSamples) {
+  const std::vector<float> img = Noise(3);
+  RefWindow w;
+  PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
+  // Samples land at x = 42..52: the three columns past x = 47 leave the
+  // source, half the window stays, and so does the centre (x = 47).
+  const Mat3 right_third_out = {{1, 0, 27.0f, 0, 1, 0, 0, 0, 1}};
+  EXPECT_LT(WindowNccCost(w, View(img), View(img), right_third_out, kUniform), kMaxCost);
+  EXPECT_NEAR(WindowNccCost(w, View(img), View(img), right_third_out, kUniform),
+              NccCost(View(img), View(img), right_third_out, 20, 15, kUniform), 2e-4f);
+  const Mat3 centre_out = {{1, 0, 28.0f, 0, 1, 0, 0, 0, 1}};  // centre at x = 48
+  EXPECT_EQ(WindowNccCost(w, View(img), View(img), centre_out, kUniform), kMaxCost);
+}
+
+TEST(RefWindow, ScalarAndVectorSumsAgree) {
+  const std::vector<float> ref = Noise(5);
+  const std::vector<float> src = Noise(6);
+  RefWindow w;
+  PrepareRefWindow(View(ref), 24, 18, 5, 2, 0, &w);
+  SourceSums scalar, vector;
+  ASSERT_TRUE(WindowSumsScalar(w, View(src), Warp(0.3f, 0.2f), &scalar));
+  ASSERT_TRUE(WindowSums(w, View(src), Warp(0.3f, 0.2f), &vector));
+  EXPECT_NEAR(scalar.s, vector.s, 1e-4f);
+  EXPECT_NEAR(scalar.ss, vector.ss, 1e-4f);
+  EXPECT_NEAR(scalar.rs, vector.rs, 1e-5f);
+}
+
+TEST(RefWindow, SampleOutsideTheSourceRefusesTheFastPath) {
+  const std::vector<float> img = Noise(3);
+  RefWindow w;
+  PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
+  SourceSums sums;
+  const Mat3 near_right_edge = {
+      {1, 0, kW - 1.0f - 25.5f, 0, 1, 0, 0, 0, 1}};  // last column at 46.5
+  EXPECT_TRUE(WindowSumsScalar(w, View(img), near_right_edge, &sums));
+  const Mat3 on_right_edge = {{1, 0, kW - 1.0f - 25.0f, 0, 1, 0, 0, 0, 1}};  // last column at 47
+  EXPECT_FALSE(WindowSumsScalar(w, View(img), on_right_edge, &sums));
+  EXPECT_FALSE(WindowSums(w, View(img), on_right_edge, &sums));
+  const Mat3 behind = {{1, 0, 0, 0, 1, 0, 0, 0, -1}};
+  EXPECT_FALSE(WindowSums(w, View(img), behind, &sums));
+}
+
+TEST(RefWindow, FlatReferenceCostsMax) {
+  const std::vector<float> flat(kW * kH, 0.5f);
+  const std::vector<float> src = Noise(4);
+  RefWindow w;
+  PrepareRefWindow(View(flat), 20, 15, 5, 2, 0, &w);
+  EXPECT_EQ(w.textured, 0);
+  EXPECT_EQ(WindowNccCost(w, View(flat), View(src), Warp(0.3f, 0.2f), kUniform), kMaxCost);
+}
+
+}  // namespace
+}  // namespace core
+}  // namespace msp

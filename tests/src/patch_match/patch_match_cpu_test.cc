@@ -1,0 +1,217 @@
+#include "patch_match/patch_match_cpu.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "prior/label_layers.h"
+#include "tests/src/synthetic_views.h"
+
+namespace msp {
+namespace {
+
+// Keeps every written map in memory.
+class MemorySink : public MapSink {
+ public:
+  bool HasFinalOutput(int view) const override { return done.count(view) > 0; }
+  void Write(int view, const std::string& type, const DenseMap& depth,
+             const DenseMap& normal) override {
+    maps[{view, type}] = {depth, normal};
+  }
+  void WritePriorPreview(int view, const DenseMap& color, const std::vector<uint8_t>& aggregated,
+                         const std::vector<uint8_t>& refined) override {
+    previews[view] = {aggregated, refined};
+    preview_sizes[view] = {color.width, color.height};
+  }
+  std::map<std::pair<int, std::string>, std::pair<DenseMap, DenseMap>> maps;
+  std::map<int, std::pair<std::vector<uint8_t>, std::vector<uint8_t>>> previews;
+  std::map<int, std::pair<int, int>> preview_sizes;
+  std::map<int, bool> done;
+};
+
+constexpr float kPlaneDepth = 2.0f;
+
+std::vector<Problem> AllProblems(int num_views) {
+  std::vector<Problem> problems;
+  for (int v = 0; v < num_views; ++v) {
+    Problem p;
+    p.ref = v;
+    for (int s = 0; s < num_views; ++s) {
+      if (s != v) p.srcs.push_back(s);
+    }
+    p.depth_min = 1.0f;
+    p.depth_max = 4.0f;
+    problems.push_back(p);
+  }
+  return problems;
+}
+
+TEST(PatchMatchCpu, RecoversFrontoParallelPlane) {
+  const std::vector<View> views =
+      testing_support::RenderFrontoParallelPlane(96, 72, 4, kPlaneDepth, 0.25f);
+  const std::vector<Problem> problems = AllProblems(4);
+  PatchMatchStereoOptions pm;
+  MspStereoOptions msp;
+  msp.num_threads = 2;
+  MemorySink sink;
+  RunPatchMatchCpu(views, problems, pm, msp, "/tmp", sink);
+  const auto it = sink.maps.find({0, std::string("geometric")});
+  ASSERT_NE(it, sink.maps.end());
+  const DenseMap& depth = it->second.first;
+  const DenseMap& normal = it->second.second;
+  int valid = 0, accurate = 0, total = 0;
+  // Away from the border, where every source sees the plane.
+  for (int r = 12; r < depth.height - 12; ++r) {
+    for (int c = 12; c < depth.width - 12; ++c) {
+      ++total;
+      const float d = depth.At(r, c);
+      if (d <= 0.0f) continue;
+      ++valid;
+      if (std::fabs(d - kPlaneDepth) < /*max_rel_depth_error=*/0.005f * kPlaneDepth) ++accurate;
+      const float nz = normal.At(r, c, 2);
+      EXPECT_NEAR(std::sqrt(normal.At(r, c, 0) * normal.At(r, c, 0) +
+                            normal.At(r, c, 1) * normal.At(r, c, 1) + nz * nz),
+                  1.0f, 1e-4f);
+      EXPECT_LT(nz, 0.0f);  // facing the camera
+    }
+  }
+  EXPECT_GT(valid, 0.9 * total);
+  EXPECT_GT(accurate, 0.95 * valid);
+  EXPECT_TRUE(sink.maps.count({0, std::string("photometric")}));
+}
+
+// With the segmentation prior on (the default) and off: the same seed gives
+// the same maps on 1 and 2 threads.
+TEST(PatchMatchCpu, DeterministicAcrossThreadCountsWithAndWithoutPrior) {
+  const std::vector<View> views =
+      testing_support::RenderFrontoParallelPlane(48, 40, 3, kPlaneDepth, 0.25f);
+  const std::vector<Problem> problems = AllProblems(3);
+  PatchMatchStereoOptions pm;
+  for (bool prior : {true, false}) {
+    MspStereoOptions msp;
+    msp.seed = 3;
+    msp.segmentation_prior = prior;
+    msp.write_previews = true;  // the edges that confined the last pass, to compare
+    MemorySink one, two;
+    msp.num_threads = 1;
+    RunPatchMatchCpu(views, problems, pm, msp, "/tmp", one);
+    msp.num_threads = 2;
+    RunPatchMatchCpu(views, problems, pm, msp, "/tmp", two);
+    ASSERT_EQ(one.maps.size(), two.maps.size());
+    for (const auto& entry : one.maps) {
+      EXPECT_EQ(entry.second.first.data, two.maps.at(entry.first).first.data) << "prior " << prior;
+      EXPECT_EQ(entry.second.second.data, two.maps.at(entry.first).second.data);
+    }
+    EXPECT_EQ(one.previews, two.previews);
+    if (!prior) {
+      EXPECT_TRUE(one.previews.empty());
+      continue;
+    }
+    ASSERT_EQ(one.previews.size(), 3u);
+    long long edge_pixels = 0;
+    for (const auto& preview : one.previews) {
+      for (uint8_t e : preview.second.second) edge_pixels += e;
+    }
+    EXPECT_GT(edge_pixels, 0) << "the prior must have made edges to confine with";
+  }
+}
+
+// A reference view with user mask layers uses them, not the embedded
+// segmenter: its one layer (two regions split at column kSplit) is the only
+// layer, so every region is kept and B' is exactly the split, 2 px wide.
+// Views without layers get the segmenter's edges. Previews show both.
+TEST(PatchMatchCpu, UserMaskLayersAreUsedOverTheEmbeddedSegmenter) {
+  constexpr int kWidth = 48, kHeight = 40, kSplit = 20;
+  std::vector<View> views =
+      testing_support::RenderFrontoParallelPlane(kWidth, kHeight, 3, kPlaneDepth, 0.25f);
+  LabelLayers layers;
+  layers.width = kWidth;
+  layers.height = kHeight;
+  layers.levels.assign(1, std::vector<int32_t>(kWidth * kHeight));
+  for (int i = 0; i < kWidth * kHeight; ++i) layers.levels[0][i] = i % kWidth < kSplit ? 1 : 2;
+  views[0].mask_layers.source = LabelSource::kMaskFiles;
+  views[0].mask_layers.layers = layers;
+  PatchMatchStereoOptions pm;
+  MspStereoOptions msp;
+  msp.write_previews = true;
+  msp.edge_refinement = false;  // B' itself confines
+  MemorySink sink;
+  RunPatchMatchCpu(views, AllProblems(3), pm, msp, "/tmp", sink);
+  ASSERT_EQ(sink.previews.size(), 3u);
+  const std::vector<uint8_t>& aggregated = sink.previews.at(0).first;
+  ASSERT_EQ(aggregated.size(), static_cast<size_t>(kWidth * kHeight));
+  EXPECT_TRUE(sink.previews.at(0).second.empty() ||
+              std::count(sink.previews.at(0).second.begin(), sink.previews.at(0).second.end(),
+                         1) == 0);  // no refined edges without the CRF
+  EXPECT_EQ(sink.preview_sizes.at(0), std::make_pair(kWidth, kHeight));
+  for (int i = 0; i < kWidth * kHeight; ++i) {
+    const int col = i % kWidth;
+    EXPECT_EQ(aggregated[i], (col == kSplit - 1 || col == kSplit) ? 1 : 0) << i;
+  }
+  // The embedded segmenter on the others' colour images finds other edges.
+  for (int v = 1; v < 3; ++v) {
+    const std::vector<uint8_t>& edges = sink.previews.at(v).first;
+    ASSERT_EQ(edges.size(), static_cast<size_t>(kWidth * kHeight));
+    EXPECT_NE(edges, aggregated);
+  }
+}
+
+TEST(PatchMatchCpu, DeterministicAcrossThreadCounts) {
+  const std::vector<View> views =
+      testing_support::RenderFrontoParallelPlane(64, 48, 3, kPlaneDepth, 0.25f);
+  const std::vector<Problem> problems = AllProblems(3);
+  PatchMatchStereoOptions pm;
+  MspStereoOptions msp;
+  msp.seed = 7;
+  std::vector<MemorySink> sinks(3);
+  const int threads[3] = {1, 2, 2};
+  for (int k = 0; k < 3; ++k) {
+    msp.num_threads = threads[k];
+    RunPatchMatchCpu(views, problems, pm, msp, "/tmp", sinks[k]);
+  }
+  for (int k = 1; k < 3; ++k) {
+    ASSERT_EQ(sinks[k].maps.size(), sinks[0].maps.size());
+    for (const auto& entry : sinks[0].maps) {
+      const auto& other = sinks[k].maps.at(entry.first);
+      EXPECT_EQ(entry.second.first.data, other.first.data);
+      EXPECT_EQ(entry.second.second.data, other.second.data);
+    }
+  }
+}
+
+// A cache budget smaller than one image's state spills every other state to
+// the scratch folder between passes; the maps must not change.
+TEST(PatchMatchCpu, SpillingStateGivesIdenticalMaps) {
+  const std::vector<View> views =
+      testing_support::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
+  const std::vector<Problem> problems = AllProblems(3);
+  PatchMatchStereoOptions pm;
+  MspStereoOptions msp;
+  MemorySink in_memory, spilled;
+  RunPatchMatchCpu(views, problems, pm, msp, "/tmp", in_memory);
+  pm.cache_size = 1e-6;  // ~1 kB
+  RunPatchMatchCpu(views, problems, pm, msp, testing::TempDir(), spilled);
+  ASSERT_EQ(spilled.maps.size(), in_memory.maps.size());
+  for (const auto& entry : in_memory.maps) {
+    EXPECT_EQ(entry.second.first.data, spilled.maps.at(entry.first).first.data);
+  }
+}
+
+TEST(PatchMatchCpu, SkipsImagesWithFinalOutputs) {
+  const std::vector<View> views =
+      testing_support::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
+  PatchMatchStereoOptions pm;
+  pm.geom_consistency = false;
+  MspStereoOptions msp;
+  MemorySink sink;
+  for (int v = 0; v < 3; ++v) sink.done[v] = true;
+  RunPatchMatchCpu(views, AllProblems(3), pm, msp, "/tmp", sink);
+  EXPECT_TRUE(sink.maps.empty());
+}
+
+}  // namespace
+}  // namespace msp

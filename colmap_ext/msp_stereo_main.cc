@@ -63,8 +63,7 @@ void WarnAboutIgnoredOptions(const StereoCommandOptions& options) {
                  "does not run\n";
   }
   if (options.msp.backend == "cpu" && options.patch_match.gpu_index != "-1") {
-    std::cout << "WARNING: --PatchMatchStereo.gpu_index is ignored by the cpu back-end "
-                 "(use --MspStereo.backend cuda)\n";
+    std::cout << "WARNING: --PatchMatchStereo.gpu_index is ignored by the cpu back-end\n";
   }
 }
 
@@ -78,6 +77,9 @@ int Run(int argc, char** argv) {
 
   const auto start = std::chrono::steady_clock::now();
   PrintHeading("MSP stereo (backend: " + options.msp.backend + ")");
+  std::cout << "Options:\n";
+  PrintStereoCommandOptions(options, std::cout);
+  std::cout << std::endl;
   WarnAboutIgnoredOptions(options);
 
   std::cout << "Reading workspace " << options.workspace_path << "..." << std::endl;

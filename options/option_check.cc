@@ -1,10 +1,12 @@
 #include "options/option_check.h"
 
+#include <initializer_list>
 #include <sstream>
 #include <string>
 
 #include "core/deformable/anchors.h"
 #include "core/prior/prior_limits.h"
+#include "options/option_name.h"
 
 namespace msp {
 namespace {
@@ -24,10 +26,15 @@ std::string ToText(const T& value) {
   throw OptionError("invalid value " + value + " for --" + option + ": must be " + allowed);
 }
 
-// Interval checks; `lo_open`/`hi_open` exclude the bound, as in "[0, 180)".
+// Which ends of an interval belong to it: [lo, hi], [lo, hi) or (lo, hi).
+enum class Interval { kClosed, kOpenHigh, kOpen };
+
+// `why` (with its leading space) follows the interval in the message.
 template <typename T>
-void CheckRange(const std::string& option, T value, T lo, T hi, bool lo_open = false,
-                bool hi_open = false, const std::string& why = "") {
+void CheckRange(const std::string& option, T value, T lo, T hi,
+                Interval interval = Interval::kClosed, const std::string& why = "") {
+  const bool lo_open = interval == Interval::kOpen;
+  const bool hi_open = interval != Interval::kClosed;
   const bool ok = (lo_open ? value > lo : value >= lo) && (hi_open ? value < hi : value <= hi);
   if (!ok) {
     Fail(option, ToText(value),
@@ -46,17 +53,37 @@ void CheckNonNegative(const std::string& option, T value) {
   if (!(value >= T(0))) Fail(option, ToText(value), ">= 0");
 }
 
-const std::string kPm = "PatchMatchStereo.";
+void CheckOneOf(const std::string& option, const std::string& value,
+                std::initializer_list<const char*> allowed) {
+  std::string list;
+  for (const char* entry : allowed) {
+    if (value == entry) return;
+    list += (list.empty() ? "" : ", ") + std::string(entry);
+  }
+  Fail(option, "`" + value + "`", "one of {" + list + "}");
+}
+
+// Each rule takes the options struct and the bare field; the message names
+// the option as MSP_OPTION_NAME spells it from the field.
+#define MSP_CHECK_RANGE(options, field, ...) \
+  CheckRange(MSP_OPTION_NAME(options, field), (options).field, __VA_ARGS__)
+#define MSP_CHECK_POSITIVE(options, field) \
+  CheckPositive(MSP_OPTION_NAME(options, field), (options).field)
+#define MSP_CHECK_NON_NEGATIVE(options, field) \
+  CheckNonNegative(MSP_OPTION_NAME(options, field), (options).field)
+#define MSP_CHECK_ONE_OF(options, field, ...) \
+  CheckOneOf(MSP_OPTION_NAME(options, field), (options).field, {__VA_ARGS__})
 
 void CheckDepthRange(const PatchMatchStereoOptions& o) {
   // COLMAP: both -1 = per-image range from the sparse model; otherwise a
   // manual range with 0 <= min <= max.
   if (o.depth_min == -1.0 && o.depth_max == -1.0) return;
-  const std::string allowed_min =
-      "-1 (automatic, with depth_max -1) or in [0, depth_max = " + ToText(o.depth_max) + "]";
-  if (!(o.depth_min >= 0.0)) Fail(kPm + "depth_min", ToText(o.depth_min), allowed_min);
+  if (!(o.depth_min >= 0.0)) {
+    Fail(MSP_OPTION_NAME(o, depth_min), ToText(o.depth_min),
+         "-1 (automatic, with depth_max -1) or in [0, depth_max = " + ToText(o.depth_max) + "]");
+  }
   if (!(o.depth_max >= o.depth_min)) {
-    Fail(kPm + "depth_max", ToText(o.depth_max),
+    Fail(MSP_OPTION_NAME(o, depth_max), ToText(o.depth_max),
          "-1 (automatic, with depth_min -1) or >= depth_min = " + ToText(o.depth_min));
   }
 }
@@ -65,52 +92,48 @@ void CheckDepthRange(const PatchMatchStereoOptions& o) {
 
 void CheckPatchMatchStereoOptions(const PatchMatchStereoOptions& o) {
   CheckDepthRange(o);
-  CheckRange(kPm + "window_radius", o.window_radius, 1, kMaxWindowRadius, false, false,
-             " (the widest window the back-ends hold, kMaxWindowRadius; COLMAP allows 32)");
-  CheckRange(kPm + "window_step", o.window_step, 1, 2);
-  CheckPositive(kPm + "sigma_color", o.sigma_color);
-  CheckPositive(kPm + "num_samples", o.num_samples);
-  CheckPositive(kPm + "ncc_sigma", o.ncc_sigma);
-  CheckRange(kPm + "min_triangulation_angle", o.min_triangulation_angle, 0.0, 180.0, false, true);
-  CheckPositive(kPm + "incident_angle_sigma", o.incident_angle_sigma);
-  CheckPositive(kPm + "num_iterations", o.num_iterations);
-  CheckNonNegative(kPm + "geom_consistency_regularizer", o.geom_consistency_regularizer);
-  CheckNonNegative(kPm + "geom_consistency_max_cost", o.geom_consistency_max_cost);
-  CheckRange(kPm + "filter_min_ncc", o.filter_min_ncc, -1.0, 1.0);
-  CheckRange(kPm + "filter_min_triangulation_angle", o.filter_min_triangulation_angle, 0.0, 180.0);
-  CheckNonNegative(kPm + "filter_min_num_consistent", o.filter_min_num_consistent);
-  CheckNonNegative(kPm + "filter_geom_consistency_max_cost", o.filter_geom_consistency_max_cost);
-  CheckPositive(kPm + "cache_size", o.cache_size);
+  MSP_CHECK_RANGE(o, window_radius, 1, kMaxWindowRadius, Interval::kClosed,
+                  " (the widest window the back-ends hold, kMaxWindowRadius; COLMAP allows 32)");
+  MSP_CHECK_RANGE(o, window_step, 1, 2);
+  MSP_CHECK_POSITIVE(o, sigma_color);
+  MSP_CHECK_POSITIVE(o, num_samples);
+  MSP_CHECK_POSITIVE(o, ncc_sigma);
+  MSP_CHECK_RANGE(o, min_triangulation_angle, 0.0, 180.0, Interval::kOpenHigh);
+  MSP_CHECK_POSITIVE(o, incident_angle_sigma);
+  MSP_CHECK_POSITIVE(o, num_iterations);
+  MSP_CHECK_NON_NEGATIVE(o, geom_consistency_regularizer);
+  MSP_CHECK_NON_NEGATIVE(o, geom_consistency_max_cost);
+  MSP_CHECK_RANGE(o, filter_min_ncc, -1.0, 1.0);
+  MSP_CHECK_RANGE(o, filter_min_triangulation_angle, 0.0, 180.0);
+  MSP_CHECK_NON_NEGATIVE(o, filter_min_num_consistent);
+  MSP_CHECK_NON_NEGATIVE(o, filter_geom_consistency_max_cost);
+  MSP_CHECK_POSITIVE(o, cache_size);
 }
 
 void CheckMspStereoOptions(const MspStereoOptions& o) {
-  if (o.backend != "cpu" && o.backend != "cuda") {
-    Fail("MspStereo.backend", "`" + o.backend + "`", "one of {cpu, cuda}");
-  }
-  CheckNonNegative("MspStereo.seed", o.seed);
-  CheckRange("MspStereo.coarsest_image_size", o.coarsest_image_size, kMinCoarsestImageSize, 1 << 20,
-             false, false, " (smaller images have too few pixels to match)");
-  CheckRange("MspStereo.window_step", o.window_step, 1, 2);
-  CheckRange("MspStereo.reliable_max_cost", o.reliable_max_cost, 0.0, 2.0);
-  CheckRange("MspStereo.reliable_single_cost", o.reliable_single_cost, 0.0, 2.0);
-  CheckRange("MspStereo.reliable_min_spread", o.reliable_min_spread, 0.0, 2.0);
-  CheckRange("MspStereo.anchor_max_distance", o.anchor_max_distance, core::kFirstRayRadius, 1 << 16,
-             false, false, " (the first ray sample lies 2 px from the pixel)");
-  CheckRange("MspStereo.num_mask_levels", o.num_mask_levels, 1, core::kMaxLabelLayers, false, false,
-             " (best-layer sets are 32-bit sets, kMaxLabelLayers)");
-  CheckPositive("MspStereo.crf_alpha", o.crf_alpha);
-  CheckPositive("MspStereo.crf_beta", o.crf_beta);
-  CheckRange("MspStereo.crf_unary_confidence", o.crf_unary_confidence, 0.0, 1.0, true, true);
-  CheckPositive("MspStereo.crf_iterations", o.crf_iterations);
+  MSP_CHECK_ONE_OF(o, backend, "cpu", "cuda");
+  MSP_CHECK_NON_NEGATIVE(o, seed);
+  MSP_CHECK_RANGE(o, coarsest_image_size, kMinCoarsestImageSize, 1 << 20, Interval::kClosed,
+                  " (smaller images have too few pixels to match)");
+  MSP_CHECK_RANGE(o, window_step, 1, 2);
+  MSP_CHECK_RANGE(o, reliable_max_cost, 0.0, 2.0);
+  MSP_CHECK_RANGE(o, reliable_single_cost, 0.0, 2.0);
+  MSP_CHECK_RANGE(o, reliable_min_spread, 0.0, 2.0);
+  MSP_CHECK_RANGE(o, anchor_max_distance, core::kFirstRayRadius, 1 << 16, Interval::kClosed,
+                  " (the first ray sample lies 2 px from the pixel)");
+  MSP_CHECK_RANGE(o, num_mask_levels, 1, core::kMaxLabelLayers, Interval::kClosed,
+                  " (best-layer sets are 32-bit sets, kMaxLabelLayers)");
+  MSP_CHECK_POSITIVE(o, crf_alpha);
+  MSP_CHECK_POSITIVE(o, crf_beta);
+  MSP_CHECK_RANGE(o, crf_unary_confidence, 0.0, 1.0, Interval::kOpen);
+  MSP_CHECK_POSITIVE(o, crf_iterations);
 }
 
 void CheckStereoCommandOptions(const StereoCommandOptions& o) {
   if (o.workspace_path.empty()) {
-    throw OptionError("missing required option --workspace_path");
+    throw OptionError("missing required option --" + MSP_OPTION_NAME(o, workspace_path));
   }
-  if (o.workspace_format != "COLMAP" && o.workspace_format != "PMVS") {
-    Fail("workspace_format", "`" + o.workspace_format + "`", "one of {COLMAP, PMVS}");
-  }
+  MSP_CHECK_ONE_OF(o, workspace_format, "COLMAP", "PMVS");
   CheckPatchMatchStereoOptions(o.patch_match);
   CheckMspStereoOptions(o.msp);
 }

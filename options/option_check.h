@@ -9,8 +9,9 @@
 namespace msp {
 
 // Each throws OptionError on the first invalid value; the message names the
-// option as given on the command line, the bad value and the allowed range,
-// e.g. "invalid value 3 for --PatchMatchStereo.window_step: must be in [1, 2]".
+// option as given on the command line (spelt from the field, option_name.h),
+// the bad value and the allowed range, e.g.
+// "invalid value 3 for --PatchMatchStereo.window_step: must be in [1, 2]".
 void CheckPatchMatchStereoOptions(const PatchMatchStereoOptions& options);
 void CheckMspStereoOptions(const MspStereoOptions& options);
 // The workspace fields plus both structs above.

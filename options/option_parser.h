@@ -14,6 +14,7 @@
 // error, since it is almost certainly a typo.
 #pragma once
 
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -48,8 +49,11 @@ std::string StereoCommandUsage();
 // (e.g. "PatchMatchStereo.window_radius"), in usage order.
 std::vector<std::string> StereoCommandOptionNames();
 
-// "name = value" lines for every option that maps to a field, in usage order;
-// logged at start-up so a run can be reproduced.
-std::string FormatStereoCommandOptions(const StereoCommandOptions& options);
+// Writes every option the command accepts, one `--<name> <value>` line each in
+// usage order, with the values in force (COLMAP prints its options this way);
+// msp_stereo prints it at start-up so a run can be reproduced. The names come
+// from the table the parser registers, and each value is one POSIX shell word
+// the parser reads back unchanged ('' for an empty string, quotes where needed).
+void PrintStereoCommandOptions(const StereoCommandOptions& options, std::ostream& out);
 
 }  // namespace msp

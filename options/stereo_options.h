@@ -2,6 +2,12 @@
 // PatchMatchOptions field by field (same names, same defaults), so an existing
 // `colmap patch_match_stereo` command line is a valid `msp_stereo` one.
 // MspStereoOptions holds this project's own knobs (--MspStereo.<field>).
+//
+// Each struct names its section (kSection): the option of a field is
+// --<kSection>.<field> on the command line and <field> under [<kSection>] in
+// an ini file (top-level fields have no section). The parser, Check() and the
+// start-up print derive every name from the field itself (option_name.h).
+// Fields that COLMAP has but msp_stereo does not use say "accepted, ignored".
 #pragma once
 
 #include <string>
@@ -16,111 +22,133 @@ namespace msp {
 // this constant so an accepted value always fits the kernels' window arrays.
 using core::kMaxWindowRadius;
 
-// Every --PatchMatchStereo.* option of COLMAP 3.8 (src/mvs/patch_match.h).
+// Every --PatchMatchStereo.* option of COLMAP 3.8 (src/mvs/patch_match.h),
+// plus num_threads of COLMAP >= 3.10.
 struct PatchMatchStereoOptions {
-  // Maximum image side; larger images (and K) are downsized, and so are the maps.
+  static constexpr char kSection[] = "PatchMatchStereo";
+
+  // Larger image side in pixels; larger images, their K and the maps are downsized; -1 = full.
   int max_image_size = -1;
-  // CUDA devices; -1 = all. Only meaningful with the CUDA back-end.
+  // accepted, ignored: CUDA device list ("0,1"; -1 = all); the cuda back-end cannot run yet.
   std::string gpu_index = "-1";
-  // Depth range; -1 = from the sparse model's track observations.
+  // Smallest depth (scene units) of the random search; -1 (with depth_max) = from sparse points.
   double depth_min = -1.0;
+  // Largest depth (scene units) of the random search; -1 (with depth_min) = from sparse points.
   double depth_max = -1.0;
-  // Half window size of the matching window, and the sampling step inside it.
+  // Half size of the NCC matching window in pixels (1..kMaxWindowRadius).
   int window_radius = 5;
+  // accepted, ignored: the window sampling step (pixels) is MspStereoOptions::window_step.
   int window_step = 1;
-  // Bilateral NCC weights; sigma_spatial <= 0 means window_radius.
+  // Spatial sigma (pixels) of bilateral NCC, only with --MspStereo.bilateral_ncc; <= 0 = radius.
   double sigma_spatial = -1.0;
+  // Colour sigma (grey level in [0, 1]) of bilateral NCC, only with --MspStereo.bilateral_ncc.
   double sigma_color = 0.2;
-  // Monte-Carlo view samples per pixel.
+  // Source views drawn per pixel (Monte-Carlo view selection) to form the matching cost.
   int num_samples = 15;
+  // accepted, ignored: spread (unitless) of the NCC likelihood of COLMAP's view selection.
   double ncc_sigma = 0.6;
-  // Minimum triangulation angle (degrees) for __auto__ source selection.
+  // Minimum triangulation angle in degrees for __auto__ source-image selection.
   double min_triangulation_angle = 1.0;
+  // accepted, ignored: spread (on 1 - cos) of the incident-angle likelihood, as ncc_sigma.
   double incident_angle_sigma = 0.9;
+  // accepted, ignored: COLMAP's iteration count; each pass runs 3 red-black iterations.
   int num_iterations = 5;
+  // Geometric passes after the photometric one; writes *.geometric.bin (else *.photometric.bin).
   bool geom_consistency = true;
+  // Weight (unitless) of the reprojection error against the photometric cost (1 - NCC).
   double geom_consistency_regularizer = 0.3;
+  // Clamp in pixels of the forward-backward reprojection error in the geometric cost.
   double geom_consistency_max_cost = 3.0;
+  // Filter the final depth and normal maps by the filter_* rules below.
   bool filter = true;
+  // Filter: smallest NCC (in [-1, 1]) of a source view that counts as consistent.
   double filter_min_ncc = 0.1;
+  // Filter: smallest triangulation angle in degrees of a source view that counts as consistent.
   double filter_min_triangulation_angle = 3.0;
+  // Filter: number of consistent source views a pixel needs to be kept.
   int filter_min_num_consistent = 2;
+  // Filter: largest forward-backward reprojection error in pixels of a consistent source view.
   double filter_geom_consistency_max_cost = 1.0;
-  // Memory budget in gigabytes for cached per-image state.
+  // Memory budget in gigabytes for cached per-image state; beyond it state spills to disk.
   double cache_size = 32.0;
+  // Drop missing source images (with a warning) instead of failing.
   bool allow_missing_files = false;
+  // accepted, ignored (with a warning): no consistency graphs are written.
   bool write_consistency_graph = false;
+  // accepted, ignored: COLMAP >= 3.10's I/O threads; workers are MspStereoOptions::num_threads.
+  int num_threads = -1;
 };
 
 // This project's own options (--MspStereo.*).
 struct MspStereoOptions {
-  // "cpu" or "cuda" ("cuda" needs a build with CUDA and a GPU).
+  static constexpr char kSection[] = "MspStereo";
+
+  // "cpu" or "cuda"; "cuda" stops with an error: that back-end cannot run patch match yet.
   std::string backend = "cpu";
-  // Seed of the counter-based random generator; a run is a pure function of it.
+  // Seed (>= 0) of the counter-based random generator; a run is a pure function of it.
   int seed = 0;
   // Worker threads of the CPU back-end; <= 0 = all cores.
   int num_threads = -1;
   // Folder of per-image segmentation mask layers; "" = <workspace>/masks.
   std::string mask_path = "";
-  // Rounds of the coarse-to-fine schedule halve the images until the larger
-  // side is at most this many pixels (APD-MVS: 1000).
+  // Coarse-to-fine rounds halve the images until the larger side is at most this (pixels).
   int coarsest_image_size = 1000;
-  // Sampling step inside the matching window. The paper matches every other
-  // row and column of an 11x11 window; --PatchMatchStereo.window_step (COLMAP's
-  // default 1) is not used, so that COLMAP command lines keep this speed.
+  // Pixel step between window samples, 1 or 2 (paper: 2); replaces --PatchMatchStereo.window_step.
   int window_step = 2;
-  // COLMAP's bilateral NCC weights (sigma_spatial, sigma_color) instead of the
-  // uniform weights of APD-MVS.
+  // Bilateral NCC weights (COLMAP's sigma_spatial, sigma_color) instead of APD-MVS's uniform ones.
   bool bilateral_ncc = false;
-  // Deformable patch matching of the APD-MVS baseline (algorithm.md 2): after
-  // each pass pixels are classified reliable / unreliable from their disparity
-  // cost curve, and unreliable pixels match with a patch deformed over reliable
-  // anchors. false = the conventional PatchMatch core alone.
+  // Deformable patches of APD-MVS: unreliable pixels match over reliable anchors; false = plain PM.
   bool deformable = true;
-  // Reliability thresholds on the lowest minimum of the cost curve (1 - NCC):
-  // above reliable_max_cost it is unreliable; a single minimum is reliable at
-  // or below reliable_single_cost; with several, every other minimum must lie
-  // more than reliable_min_spread above it (APD: 0.5, 0.15, 0.2).
+  // Cost (1 - NCC, in [0, 2]) above which the lowest cost-curve minimum is unreliable (APD: 0.5).
   double reliable_max_cost = 0.5;
+  // Cost (1 - NCC) at or below which a single curve minimum is reliable (APD: 0.15).
   double reliable_single_cost = 0.15;
+  // Cost (1 - NCC) every other minimum must lie above the lowest to be reliable (APD: 0.2).
   double reliable_min_spread = 0.2;
   // Anchor search range in pixels of the current round (APD: 100).
   int anchor_max_distance = 100;
-  // Multi-granularity segmentation prior (paper "Multi-granularity
-  // Segmentation Prior"; algorithm.md 3.1-3.2): anchors must not cross the
-  // depth edges it finds. false = the ablation "w/o Mul.".
+  // Segmentation prior (algorithm.md 3.1-3.2): anchors never cross its edges; false = "w/o Mul.".
   bool segmentation_prior = true;
-  // Aggregate the layers per region by their best anchor subsets (eqs. 4-5);
-  // false = the union of all layers' boundaries ("w/o Agr.").
+  // Aggregate layers per region by best anchor subsets (eqs. 4-5); false = union ("w/o Agr.").
   bool edge_aggregation = true;
-  // Refine the aggregated edges with the colour/depth CRF (eq. 6); false =
-  // "w/o Ref.".
+  // Refine the aggregated edges with the colour/depth CRF (eq. 6); false = "w/o Ref.".
   bool edge_refinement = true;
-  // Label layers the embedded segmenter builds when an image has no mask
-  // files (paper: 3, scene / instance / feature level). Mask files set their
-  // own count.
+  // Label layers the embedded segmenter builds for an image without mask files (paper: 3).
   int num_mask_levels = 3;
-  // Write <workspace>/stereo/prior_previews/<image>.png: the aggregated (red)
-  // and refined (green) edges over the image.
+  // Write <workspace>/stereo/prior_previews/<image>.png: aggregated (red), refined (green) edges.
   bool write_previews = false;
-  // CRF of eq. 6: depth bandwidth alpha as a fraction of the depth range,
-  // colour bandwidth beta on |I_p . I_q - 1|, probability of the aggregated
-  // label in the unary, mean-field iterations t = 1..crf_iterations.
+  // CRF (eq. 6) depth bandwidth alpha, as a fraction of the depth range.
   double crf_alpha = 0.02;
+  // CRF (eq. 6) colour bandwidth beta on |I_p . I_q - 1| of normalised RGB (unitless).
   double crf_beta = 0.05;
+  // CRF probability (in (0, 1)) that the unary gives the aggregated label.
   double crf_unary_confidence = 0.7;
+  // CRF mean-field iterations (count).
   int crf_iterations = 5;
 };
 
-// Everything the msp_stereo command needs.
+// Everything the msp_stereo command needs; top-level options have no section.
 struct StereoCommandOptions {
+  static constexpr char kSection[] = "";
+
+  // Dense workspace folder written by `colmap image_undistorter` (required).
   std::string workspace_path;
+  // COLMAP or PMVS (upper-cased by the parser); PMVS workspaces are refused with a message.
   std::string workspace_format = "COLMAP";
+  // accepted, ignored: option file name of a PMVS workspace, which msp_stereo refuses.
   std::string pmvs_option_name = "option-all";
+  // Problem file to use instead of <workspace>/stereo/patch-match.cfg; "" = that file.
   std::string config_path;
+  // Ini file with [PatchMatchStereo] / [MspStereo] sections; the command line overrides it.
   std::string project_path;
-  PatchMatchStereoOptions patch_match;
-  MspStereoOptions msp;
+  // COLMAP's global seed; used as MspStereoOptions::seed unless --MspStereo.seed is given.
+  int random_seed = 0;
+  // accepted, ignored: msp_stereo logs to stdout and reports errors on stderr.
+  bool log_to_stderr = false;
+  // accepted, ignored: COLMAP's glog verbosity level.
+  int log_level = 2;
+  PatchMatchStereoOptions patch_match;  // --PatchMatchStereo.*
+  MspStereoOptions msp;                 // --MspStereo.*
 };
 
 }  // namespace msp

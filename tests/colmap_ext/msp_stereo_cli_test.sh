@@ -58,6 +58,10 @@ expect_contains "missing workspace: names the path" "$err" "ERROR: "
 expect_contains "missing workspace: names the path" "$err" "$missing"
 expect_eq "missing workspace: one stderr line" "$(printf '%s\n' "$err" | wc -l)" 1
 [ ! -e "$missing" ] && pass "missing workspace is not created" || fail "missing workspace is not created"
+# The options in force are printed at start-up, one `--name value` line each.
+expect_contains "start-up print: quoted path" "$out" "--workspace_path '$missing'"
+expect_contains "start-up print: a default" "$out" "--PatchMatchStereo.window_radius 5"
+expect_contains "start-up print: an own option" "$out" "--MspStereo.backend cpu"
 
 # The same binary through the dispatcher next to it.
 run env PATH=/usr/bin:/bin "$DISPATCHER" msp_stereo --help

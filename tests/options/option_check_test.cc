@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
 #include <limits>
 #include <string>
@@ -24,6 +25,21 @@ std::string CheckError(const StereoCommandOptions& options) {
     return e.what();
   }
   return "";
+}
+
+// The option an "invalid value V for --<name>: ..." message names.
+std::string NamedOption(const std::string& message) {
+  const std::string marker = " for --";
+  const size_t begin = message.find(marker);
+  if (begin == std::string::npos) return "";
+  const size_t end = message.find(':', begin);
+  return message.substr(begin + marker.size(), end - begin - marker.size());
+}
+
+// Whether the parser accepts `name` (so a message names an option a user can set).
+bool IsRegistered(const std::string& name) {
+  const std::vector<std::string> names = StereoCommandOptionNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
 }
 
 struct BadCase {
@@ -110,6 +126,7 @@ TEST(OptionCheck, EveryOutOfRangeValueNamesOptionValueAndRange) {
     c.apply(&options);
     const std::string error = CheckError(options);
     EXPECT_NE(error.find("--" + c.option + ":"), std::string::npos) << c.option << ": " << error;
+    EXPECT_TRUE(IsRegistered(NamedOption(error))) << error;
     EXPECT_NE(error.find("invalid value " + c.value + " "), std::string::npos) << error;
     EXPECT_NE(error.find(c.range), std::string::npos) << error;
   }
@@ -143,6 +160,19 @@ TEST(OptionCheck, NanIsRejected) {
   EXPECT_NE(CheckError(o).find("--PatchMatchStereo.sigma_color"), std::string::npos);
 }
 
+TEST(OptionCheck, MessageNamesTheOptionOfTheField) {
+  // Option names in messages are spelt from the fields, with the section.
+  StereoCommandOptions o = Valid();
+  o.msp.window_step = 0;
+  EXPECT_EQ(NamedOption(CheckError(o)), "MspStereo.window_step");
+  o = Valid();
+  o.patch_match.window_step = 0;
+  EXPECT_EQ(NamedOption(CheckError(o)), "PatchMatchStereo.window_step");
+  o = Valid();
+  o.workspace_format = "X";
+  EXPECT_EQ(NamedOption(CheckError(o)), "workspace_format");
+}
+
 TEST(OptionCheck, WorkspacePathRequired) {
   StereoCommandOptions o;
   EXPECT_NE(CheckError(o).find("--workspace_path"), std::string::npos);
@@ -164,6 +194,7 @@ TEST(OptionCheck, SegmentationPriorRules) {
     c.apply(&o);
     const std::string message = CheckError(o);
     EXPECT_NE(message.find("--" + c.option), std::string::npos) << message;
+    EXPECT_TRUE(IsRegistered(NamedOption(message))) << message;
     EXPECT_NE(message.find(c.value), std::string::npos) << message;
     EXPECT_NE(message.find(c.range), std::string::npos) << message;
   }

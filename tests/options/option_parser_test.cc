@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -51,7 +52,16 @@ const std::vector<std::string> kMspFields = {"backend",
                                              "reliable_max_cost",
                                              "reliable_single_cost",
                                              "reliable_min_spread",
-                                             "anchor_max_distance"};
+                                             "anchor_max_distance",
+                                             "segmentation_prior",
+                                             "edge_aggregation",
+                                             "edge_refinement",
+                                             "num_mask_levels",
+                                             "write_previews",
+                                             "crf_alpha",
+                                             "crf_beta",
+                                             "crf_unary_confidence",
+                                             "crf_iterations"};
 const std::vector<std::string> kTopLevel = {
     "workspace_path", "workspace_format", "pmvs_option_name", "config_path",
     "project_path",   "random_seed",      "log_to_stderr",    "log_level"};
@@ -334,13 +344,120 @@ TEST(OptionParser, EveryListedOptionParses) {
   }
 }
 
-TEST(OptionParser, FormatListsFieldValues) {
-  StereoCommandOptions o =
-      Parse({"--workspace_path", "w", "--PatchMatchStereo.window_radius", "8"});
-  const std::string text = FormatStereoCommandOptions(o);
-  EXPECT_NE(text.find("PatchMatchStereo.window_radius = 8\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("workspace_path = w\n"), std::string::npos) << text;
-  EXPECT_EQ(text.find("log_level"), std::string::npos) << text;  // not a field
+// PrintStereoCommandOptions as lines.
+std::vector<std::string> PrintedLines(const StereoCommandOptions& options) {
+  std::ostringstream out;
+  PrintStereoCommandOptions(options, out);
+  std::istringstream in(out.str());
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// The arguments a POSIX shell makes of `line` (quotes and backslashes only).
+std::vector<std::string> ShellWords(const std::string& line) {
+  std::vector<std::string> words;
+  std::string word;
+  bool in_word = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char ch = line[i];
+    if (ch == ' ') {
+      if (in_word) words.push_back(word);
+      word.clear();
+      in_word = false;
+    } else if (ch == '\'') {
+      const size_t end = line.find('\'', i + 1);
+      if (end == std::string::npos) {
+        ADD_FAILURE() << "unterminated quote in " << line;
+        break;
+      }
+      word += line.substr(i + 1, end - i - 1);
+      i = end;
+      in_word = true;
+    } else if (ch == '\\' && i + 1 < line.size()) {
+      word += line[++i];
+      in_word = true;
+    } else {
+      word += ch;
+      in_word = true;
+    }
+  }
+  if (in_word) words.push_back(word);
+  return words;
+}
+
+TEST(OptionParser, PrintListsEveryRegisteredOptionOnceWithItsValue) {
+  const std::vector<std::string> names = StereoCommandOptionNames();
+  const std::vector<std::string> lines =
+      PrintedLines(Parse({"--workspace_path", "w", "--PatchMatchStereo.window_radius", "8"}));
+  ASSERT_EQ(lines.size(), names.size());
+  for (size_t i = 0; i < names.size(); ++i) {
+    EXPECT_EQ(lines[i].rfind("--" + names[i] + " ", 0), 0u) << lines[i];
+    EXPECT_EQ(std::count(names.begin(), names.end(), names[i]), 1) << names[i];
+  }
+  const auto has = [&](const std::string& line) {
+    return std::find(lines.begin(), lines.end(), line) != lines.end();
+  };
+  EXPECT_TRUE(has("--workspace_path w"));
+  EXPECT_TRUE(has("--PatchMatchStereo.window_radius 8"));
+  EXPECT_TRUE(has("--PatchMatchStereo.sigma_color 0.2"));
+  EXPECT_TRUE(has("--PatchMatchStereo.geom_consistency true"));
+  EXPECT_TRUE(has("--PatchMatchStereo.num_threads -1"));  // accepted, ignored: still listed
+  EXPECT_TRUE(has("--MspStereo.backend cpu"));
+  EXPECT_TRUE(has("--MspStereo.mask_path ''"));
+  EXPECT_TRUE(has("--log_level 2"));
+}
+
+TEST(OptionParser, PrintedValuesRoundTripThroughTheParser) {
+  const std::vector<std::string> given = {"--workspace_path",
+                                          "/data/my ws/it's here",
+                                          "--workspace_format",
+                                          "pmvs",
+                                          "--config_path",
+                                          "",
+                                          "--random_seed",
+                                          "9",
+                                          "--PatchMatchStereo.depth_min",
+                                          "0.1",
+                                          "--PatchMatchStereo.depth_max",
+                                          "12.300000000000001",
+                                          "--PatchMatchStereo.sigma_color",
+                                          "0.30000000000000004",
+                                          "--PatchMatchStereo.filter_min_ncc",
+                                          "-0.25",
+                                          "--PatchMatchStereo.gpu_index",
+                                          "0,1",
+                                          "--PatchMatchStereo.filter",
+                                          "0",
+                                          "--MspStereo.mask_path",
+                                          "masks; rm -rf x",
+                                          "--MspStereo.crf_alpha",
+                                          "1e-07",
+                                          "--MspStereo.num_threads",
+                                          "3"};
+  const StereoCommandOptions first = Parse(given);
+  const std::vector<std::string> printed = PrintedLines(first);
+
+  std::vector<std::string> args;
+  for (const std::string& line : printed) {
+    const std::vector<std::string> words = ShellWords(line);
+    ASSERT_EQ(words.size(), 2u) << line;
+    args.insert(args.end(), words.begin(), words.end());
+  }
+  const StereoCommandOptions second = Parse(args);
+  EXPECT_EQ(PrintedLines(second), printed);
+  EXPECT_EQ(second.workspace_path, "/data/my ws/it's here");
+  EXPECT_EQ(second.workspace_format, "PMVS");
+  EXPECT_EQ(second.config_path, "");
+  EXPECT_EQ(second.patch_match.depth_max, first.patch_match.depth_max);  // every bit
+  EXPECT_EQ(second.patch_match.sigma_color, 0.1 + 0.2);
+  EXPECT_EQ(second.patch_match.filter_min_ncc, -0.25);
+  EXPECT_EQ(second.patch_match.gpu_index, "0,1");
+  EXPECT_FALSE(second.patch_match.filter);
+  EXPECT_EQ(second.msp.mask_path, "masks; rm -rf x");
+  EXPECT_EQ(second.msp.crf_alpha, 1e-7);
+  EXPECT_EQ(second.msp.num_threads, 3);
+  EXPECT_EQ(second.msp.seed, 9);  // from --random_seed, and printed as --MspStereo.seed
 }
 
 }  // namespace

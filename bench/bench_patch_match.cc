@@ -168,7 +168,10 @@ void BenchDeformableCost(const core::PassParams& p, int width, int height) {
       core::PrepareDeformableWindows(p, c, r, anchors, d, &w);
       const core::PreparedPlane plane = core::PreparePlane(p, c, r, h);
       double t0 = ThreadCpuSeconds();
-      for (int j = 0; j < p.num_src; ++j) sink += core::ViewCost(p, w.centre, j, plane);
+      for (int j = 0; j < p.num_src; ++j) {
+        sink += core::PhotometricViewCost(p, w.centre, j, plane) +
+                core::GeometricTerm(p, j, c, r, plane.depth);
+      }
       double t1 = ThreadCpuSeconds();
       seconds[0] += t1 - t0;
       for (int j = 0; j < p.num_src; ++j) sink += core::DeformableViewCost(p, w, j, plane, d);

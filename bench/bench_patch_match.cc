@@ -168,7 +168,10 @@ void BenchDeformableCost(const core::PassParams& p, int width, int height) {
       core::PrepareDeformableWindows(p, c, r, anchors, d, &w);
       const core::PreparedPlane plane = core::PreparePlane(p, c, r, h);
       double t0 = ThreadCpuSeconds();
-      for (int j = 0; j < p.num_src; ++j) sink += core::ViewCost(p, w.centre, j, plane);
+      for (int j = 0; j < p.num_src; ++j) {
+        sink += core::PhotometricViewCost(p, w.centre, j, plane) +
+                core::GeometricTerm(p, j, c, r, plane.depth);
+      }
       double t1 = ThreadCpuSeconds();
       seconds[0] += t1 - t0;
       for (int j = 0; j < p.num_src; ++j) sink += core::DeformableViewCost(p, w, j, plane, d);
@@ -192,9 +195,9 @@ void Run(int width, int height, int num_views, bool ncc_only) {
   const core::PassParams p = MakeParams(views, &state);
 
   // Matching cost on one core: every pixel against every source with a fixed
-  // plane, in the general form (NccCost) and the fast one (a reference window
-  // prepared once per pixel, as the sweeps do). CPU time of this thread, so a
-  // busy machine disturbs the figures less than wall time would.
+  // plane, in the general form (GeneralNccCost) and the fast one (a reference
+  // window prepared once per pixel, as the sweeps do). CPU time of this
+  // thread, so a busy machine disturbs the figures less than wall time would.
   const core::PlaneHypothesis h{2.0f, core::Vec3{0.0f, 0.0f, -1.0f}};
   const int per_side = 2 * p.ncc.window_radius / p.ncc.window_step + 1;
   const int samples = per_side * per_side;
@@ -212,7 +215,7 @@ void Run(int width, int height, int num_views, bool ncc_only) {
           const core::SourceView& s = p.src[j];
           const core::Mat3 H = core::ComputeHomography(p.ref_camera, s.rel, h.normal, dist);
           sink += fast ? core::WindowNccCost(w, p.ref_image, s.image, H, p.ncc)
-                       : core::NccCost(p.ref_image, s.image, H, c, r, p.ncc);
+                       : core::GeneralNccCost(p.ref_image, s.image, H, c, r, p.ncc);
           ++evaluations;
         }
       }
@@ -220,7 +223,7 @@ void Run(int width, int height, int num_views, bool ncc_only) {
     const double seconds = ThreadCpuSeconds() - t0;
     rate[fast] = evaluations / seconds;
     std::printf("ncc %s: %.3g evaluations/s on one core (%d samples each), %.2f ns/sample [%g]\n",
-                fast ? "fast (WindowNccCost)" : "general (NccCost)", rate[fast], samples,
+                fast ? "fast (WindowNccCost)" : "general (GeneralNccCost)", rate[fast], samples,
                 1e9 * seconds / (evaluations * static_cast<double>(samples)), sink > 0 ? 1.0 : 0.0);
   }
   std::printf("ncc fast / general: %.2fx (vector path: %s)\n", rate[1] / rate[0],

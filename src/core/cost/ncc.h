@@ -1,6 +1,10 @@
 // Photometric matching cost: 1 - NCC over a (2r+1)^2 window sampled every
 // `step` pixels (paper: 11x11, every other pixel), the source window warped by
 // the plane-induced homography, optionally with COLMAP's bilateral weights.
+// This header holds the parameters, the rules every form shares and the
+// general form; the sweeps call the fast form of a prepared window
+// (WindowNccCost, window_cost.h; WindowNccCosts, window_batch.h), which
+// takes the general form for the windows it cannot prepare.
 #pragma once
 
 #include <cmath>
@@ -58,11 +62,11 @@ MSP_HD bool CentreInSource(const Mat3& H, const ImageView& src, int col, int row
 }
 
 // 1 - NCC in [0, 2] for the window centred at reference pixel (col, row): the
-// general form, with bilateral weights and windows over the image borders.
-// The warp of a grid is incremental: one homogeneous add and one divide per
-// sample. Hot loops use WindowNccCost (ref_window.h), which falls back here.
-MSP_HD float NccCost(const ImageView& ref, const ImageView& src, const Mat3& H, int col, int row,
-                     const NccParams& p) {
+// general form, for any window size, with bilateral weights and windows over
+// the image borders. The warp of a grid is incremental: one homogeneous add
+// and one divide per sample.
+MSP_HD float GeneralNccCost(const ImageView& ref, const ImageView& src, const Mat3& H, int col,
+                            int row, const NccParams& p) {
   if (!CentreInSource(H, src, col, row)) return kMaxCost;
   const int r = p.window_radius;
   const int step = p.window_step;

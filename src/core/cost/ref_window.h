@@ -5,10 +5,10 @@
 // unit norm. A cost then needs only three source sums:
 //   NCC = sum(r^ s) / sqrt(sum(s^2) - sum(s)^2 / n).
 // Windows the fast form cannot take (bilateral weights, too many samples) use
-// the general NccCost; windows whose warp leaves the source in part are summed
-// over their valid samples (window_cost.h). A window over the reference border
-// keeps the samples inside the reference, as NccCost does. Both forms give the
-// same cost up to float rounding.
+// GeneralNccCost (ncc.h); windows whose warp leaves the source in part are
+// summed over their valid samples (window_cost.h). A window over the reference
+// border keeps the samples inside the reference, as GeneralNccCost does. Both
+// forms give the same cost up to float rounding.
 #pragma once
 
 #include <cmath>
@@ -32,7 +32,7 @@ struct RefWindow {
   int col;  // window centre in the reference image
   int row;
   int radius;
-  int num_samples;  // 0: the window takes the general NccCost
+  int num_samples;  // 0: the window takes GeneralNccCost
   int clipped;      // the window crosses the reference border: only its samples inside remain
   int textured;     // reference variance reaches kMinNccVariance
   float spread;     // sum of squared deviations of the raw reference values
@@ -111,8 +111,8 @@ struct SourceSums {
 // The sums when every sample's bilinear support lies inside the source
 // (SampleWarped); false as soon as one does not, and the window then takes
 // the partial form (window_cost.h).
-MSP_HD bool WindowSumsScalar(const RefWindow& w, const ImageView& src, const Mat3& H,
-                             SourceSums* out) {
+MSP_HD bool WholeWindowSumsScalar(const RefWindow& w, const ImageView& src, const Mat3& H,
+                                  SourceSums* out) {
   SourceSums sums = {0.0f, 0.0f, 0.0f};
   for (int k = 0; k < w.num_samples; ++k) {
     float s;
@@ -126,12 +126,12 @@ MSP_HD bool WindowSumsScalar(const RefWindow& w, const ImageView& src, const Mat
 }
 
 #if defined(MSP_WINDOW_SUMS_AVX2)
-// WindowSumsScalar, eight samples at a time; padding lanes are masked out.
+// WholeWindowSumsScalar, eight samples at a time; padding lanes are masked out.
 // When the warp keeps the window's box inside the source, no sample needs
 // its own test.
-inline bool WindowSumsAvx2(const RefWindow& w, const ImageView& src, const Mat3& H,
-                           SourceSums* out) {
-  const WarpLanes lanes = MakeWarpLanes(H, src);
+inline bool WholeWindowSumsAvx2(const RefWindow& w, const ImageView& src, const Mat3& H,
+                                SourceSums* out) {
+  const WarpLanes lanes = BroadcastWarp(H, src);
   const bool whole = WholeBox(lanes, w.box[0], w.box[1], w.box[2], w.box[3]);
   __m256 sum_s = _mm256_setzero_ps(), sum_ss = _mm256_setzero_ps(), sum_rs = _mm256_setzero_ps();
   for (int k = 0; k < w.num_samples; k += kWindowLanes) {
@@ -153,11 +153,12 @@ inline bool WindowSumsAvx2(const RefWindow& w, const ImageView& src, const Mat3&
 }
 #endif
 
-MSP_HD bool WindowSums(const RefWindow& w, const ImageView& src, const Mat3& H, SourceSums* out) {
+MSP_HD bool WholeWindowSums(const RefWindow& w, const ImageView& src, const Mat3& H,
+                            SourceSums* out) {
 #if defined(MSP_WINDOW_SUMS_AVX2)
-  return WindowSumsAvx2(w, src, H, out);
+  return WholeWindowSumsAvx2(w, src, H, out);
 #else
-  return WindowSumsScalar(w, src, H, out);
+  return WholeWindowSumsScalar(w, src, H, out);
 #endif
 }
 

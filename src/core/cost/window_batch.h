@@ -52,7 +52,7 @@ inline void WindowNccCostsAvx2(const RefWindow& w, const ImageView& ref, const I
   // Lanes whose centre lands outside cost kMaxCost, whatever their samples
   // would say: drop them first, so that they neither cost their samples nor
   // keep the other lanes from the whole-box loop.
-  WarpLanes warp = MakeLaneWarps(H, lanes, src);
+  WarpLanes warp = WarpPerLane(H, lanes, src);
   const uint32_t centred = lanes & CentreNearSourceLanes(warp, w.col, w.row);
   if (centred == 0u) {
     for (int l = 0; l < kWindowLanes; ++l) costs[l] = kMaxCost;
@@ -60,7 +60,7 @@ inline void WindowNccCostsAvx2(const RefWindow& w, const ImageView& ref, const I
   }
   if (centred != lanes) {
     lanes = centred;
-    warp = MakeLaneWarps(H, lanes, src);
+    warp = WarpPerLane(H, lanes, src);
   }
   // Most often every lane keeps the window's box inside the source: the
   // samples then need no tests, and the costs no reference sums or counts.

@@ -1,8 +1,8 @@
 // The matching cost of a prepared reference window (ref_window.h): the whole
 // window when its warp stays inside the source, otherwise the samples that
-// do. A partial window follows NccCost's rules: the centre must land in the
-// source, at least kMinValidSampleShare of the samples must, and both sides
-// need texture over those samples. NCC is invariant to an affine change of
+// do. A partial window follows GeneralNccCost's rules: the centre must land
+// in the source, at least kMinValidSampleShare of the samples must, and both
+// sides need texture over those samples. NCC is invariant to an affine change of
 // the reference values, so the normalised values serve for any subset.
 #pragma once
 
@@ -25,7 +25,8 @@ struct PartialSums {
   float r, rr, s, ss, rs;  // r: normalised reference value
 };
 
-MSP_HD PartialSums PartialSumsScalar(const RefWindow& w, const ImageView& src, const Mat3& H) {
+MSP_HD PartialSums PartialWindowSumsScalar(const RefWindow& w, const ImageView& src,
+                                           const Mat3& H) {
   PartialSums a = {0, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   for (int k = 0; k < w.num_samples; ++k) {
     float s;
@@ -42,10 +43,10 @@ MSP_HD PartialSums PartialSumsScalar(const RefWindow& w, const ImageView& src, c
 }
 
 #if defined(MSP_WINDOW_SUMS_AVX2)
-// PartialSumsScalar, eight samples at a time: lanes outside the source read
-// pixel 0 and are masked out of every sum.
-inline PartialSums PartialSumsAvx2(const RefWindow& w, const ImageView& src, const Mat3& H) {
-  const WarpLanes lanes = MakeWarpLanes(H, src);
+// PartialWindowSumsScalar, eight samples at a time: lanes outside the source
+// read pixel 0 and are masked out of every sum.
+inline PartialSums PartialWindowSumsAvx2(const RefWindow& w, const ImageView& src, const Mat3& H) {
+  const WarpLanes lanes = BroadcastWarp(H, src);
   const __m256 zero = _mm256_setzero_ps();
   __m256 sum_r = zero, sum_rr = zero, sum_s = zero, sum_ss = zero, sum_rs = zero;
   int count = 0;
@@ -97,14 +98,15 @@ inline void AddMaskedSample(__m256 source, __m256 reference, __m256 inside, Mask
 
 MSP_HD PartialSums PartialWindowSums(const RefWindow& w, const ImageView& src, const Mat3& H) {
 #if defined(MSP_WINDOW_SUMS_AVX2)
-  return PartialSumsAvx2(w, src, H);
+  return PartialWindowSumsAvx2(w, src, H);
 #else
-  return PartialSumsScalar(w, src, H);
+  return PartialWindowSumsScalar(w, src, H);
 #endif
 }
 
 // 1 - NCC over the valid samples of a partial window of `num_samples`
-// samples whose raw reference values spread by `spread` (NccCost's rules).
+// samples whose raw reference values spread by `spread` (GeneralNccCost's
+// rules).
 MSP_HD float NccFromPartialSums(const PartialSums& a, int num_samples, float spread) {
   if (a.count == 0 || static_cast<float>(a.count) < kMinValidSampleShare * num_samples) {
     return kMaxCost;
@@ -120,16 +122,17 @@ MSP_HD float NccFromPartialSums(const PartialSums& a, int num_samples, float spr
   return cost < 0.0f ? 0.0f : (cost > kMaxCost ? kMaxCost : cost);
 }
 
-// 1 - NCC in [0, 2] of window w under H: the same cost as NccCost at the
-// window's centre with uniform weights.
+// 1 - NCC in [0, 2] of window w under H, the cost the sweeps call: a window
+// the fast form cannot take (num_samples 0) takes GeneralNccCost at its
+// centre; the others get the same cost up to float rounding.
 MSP_HD float WindowNccCost(const RefWindow& w, const ImageView& ref, const ImageView& src,
                            const Mat3& H, const NccParams& p) {
-  if (w.num_samples == 0) return NccCost(ref, src, H, w.col, w.row, p);
+  if (w.num_samples == 0) return GeneralNccCost(ref, src, H, w.col, w.row, p);
   // A whole window implies its centre maps into the source only when the
   // centre lies within its samples, which a clipped window's may not.
   if (w.clipped && !CentreInSource(H, src, w.col, w.row)) return kMaxCost;
   SourceSums sums;
-  if (WindowSums(w, src, H, &sums)) {
+  if (WholeWindowSums(w, src, H, &sums)) {
     return w.textured ? NccFromSourceSums(sums, w.num_samples) : kMaxCost;
   }
   // Part of the warped window leaves the source.

@@ -165,7 +165,7 @@ struct AnchorRows {
 inline void AnchorSumsAvx2(const AnchorWindows& w, const ImageView& src, const Mat3& H,
                            AnchorSums* out) {
   const __m256i identity = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-  AnchorSumLanes(w.num_samples, AnchorRows{w}, MakeWarpLanes(H, src), LaneBits(w.fast, identity),
+  AnchorSumLanes(w.num_samples, AnchorRows{w}, BroadcastWarp(H, src), LaneBits(w.fast, identity),
                  src, out);
 }
 #endif
@@ -191,7 +191,7 @@ MSP_HD void AnchorNccCosts(const AnchorSums& sums, int num_samples, float* costs
 #endif
 }
 
-// 1 - NCC of anchor a's window by NccCost's rules, from lane l of the
+// 1 - NCC of anchor a's window by GeneralNccCost's rules, from lane l of the
 // window sums and of their fast costs. `homography()` gives the lane's H;
 // it is called only for a window that leaves the source or the reference,
 // whose rules need it. `anchor_ncc` (uniform weights, the anchor window's
@@ -200,7 +200,9 @@ template <typename HomographyFn>
 MSP_HD float AnchorWindowCost(const AnchorWindows& w, int a, const AnchorSums& sums, int l,
                               float fast_cost, const ImageView& ref, const ImageView& src,
                               const NccParams& anchor_ncc, HomographyFn homography) {
-  if (!((w.fast >> a) & 1u)) return NccCost(ref, src, homography(), w.col[a], w.row[a], anchor_ncc);
+  if (!((w.fast >> a) & 1u)) {
+    return GeneralNccCost(ref, src, homography(), w.col[a], w.row[a], anchor_ncc);
+  }
   if ((sums.inside >> l) & 1u) return ((w.textured >> a) & 1u) ? fast_cost : kMaxCost;
   const Mat3 H = homography();
   if (!CentreInSource(H, src, w.col[a], w.row[a])) return kMaxCost;
@@ -274,7 +276,7 @@ MSP_HD void AnchorPairCosts(const AnchorWindows& w, const AnchorPairLanes& lanes
                             const NccParams& anchor_ncc, float* costs) {
 #if defined(MSP_WINDOW_SUMS_AVX2)
   // H = KRK - Kt m^T per lane (WarpHomography with the planes in lanes).
-  WarpLanes warp = MakeWarpLanes(rel.KRK, src);
+  WarpLanes warp = BroadcastWarp(rel.KRK, src);
   const float kt[3] = {rel.Kt.x, rel.Kt.y, rel.Kt.z};
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 3; ++c) {

@@ -87,7 +87,7 @@ MSP_HD float DeformableFromCentre(const PassParams& p, const DeformableWindows& 
 
 // The photometric part of the deformable cost of a valid prepared
 // hypothesis at the centre pixel in source view j. `centre` receives the
-// centre window's NCC cost, the photometric part of ViewCost, which the
+// centre window's NCC cost, the conventional PhotometricViewCost, which the
 // deformable cost computes on the way.
 MSP_HD float DeformablePhotometricCost(const PassParams& p, const DeformableWindows& w, int j,
                                        const PreparedPlane& plane, const DeformableParams& d,
@@ -99,7 +99,8 @@ MSP_HD float DeformablePhotometricCost(const PassParams& p, const DeformableWind
 
 // Deformable cost of a prepared hypothesis at the centre pixel in source
 // view j; the geometric term is added in geometric passes exactly as in
-// ViewCost. `conventional`, when given, receives ViewCost of the same plane.
+// ViewCosts. `conventional`, when given, receives the conventional cost of
+// the same plane in view j (its entry of ViewCosts).
 MSP_HD float DeformableViewCost(const PassParams& p, const DeformableWindows& w, int j,
                                 const PreparedPlane& plane, const DeformableParams& d,
                                 float* conventional = nullptr) {

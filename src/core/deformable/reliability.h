@@ -213,8 +213,8 @@ class CostCurveSampler {
                                      static_cast<float>(k - half_width_));
     return h;
   }
-  // The view-weighted photometric cost of sample k (AggregateCost of
-  // PhotometricViewCosts), kMaxCost for a depth out of range; or, when it
+  // The view-weighted photometric cost of sample k (AggregateCost of the
+  // views' PhotometricViewCost), kMaxCost for a depth out of range; or, when it
   // exceeds `floor`, possibly a lower bound above `floor` (ScoreBlock).
   MSP_HD float AtLeast(int k, float floor) {
     if (!known_[k] || (!exact_[k] && !(cost_[k] > floor))) ScoreBlock(k, floor);

@@ -46,14 +46,16 @@ inline float HorizontalSum(__m256 v) {
   return _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, 1)));
 }
 
-// The homography and the source bounds, broadcast once per cost.
+// Eight lanes' homographies and the source bounds, built once per cost:
+// one homography in every lane (BroadcastWarp), or one per lane (WarpPerLane).
 struct WarpLanes {
   __m256 h[9];
   __m256 max_u, max_v;
   __m256i pitch;
 };
 
-inline WarpLanes MakeWarpLanes(const Mat3& H, const ImageView& src) {
+// H in every lane: the samples in the lanes are points of one window.
+inline WarpLanes BroadcastWarp(const Mat3& H, const ImageView& src) {
   WarpLanes w;
   for (int i = 0; i < 9; ++i) w.h[i] = _mm256_set1_ps(H.m[i]);
   w.max_u = _mm256_set1_ps(src.width - 1.0f);
@@ -65,7 +67,7 @@ inline WarpLanes MakeWarpLanes(const Mat3& H, const ImageView& src) {
 // The homographies H[l] of the lanes set in `lanes` (not 0), one per lane;
 // unused lanes repeat the first used lane's, so that their loads stay in
 // bounds with or without tests.
-inline WarpLanes MakeLaneWarps(const Mat3* H, uint32_t lanes, const ImageView& src) {
+inline WarpLanes WarpPerLane(const Mat3* H, uint32_t lanes, const ImageView& src) {
   alignas(32) float columns[9][8];  // lane l of h[i] is H[l].m[i]
   const int first = __builtin_ctz(lanes);
   for (int l = 0; l < 8; ++l) {

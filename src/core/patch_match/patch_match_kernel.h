@@ -1,7 +1,10 @@
 // The per-pixel steps of conventional PatchMatch MVS (ACMM lineage), written
-// once for the CPU driver and the CUDA kernels: scoring a hypothesis in every
-// view, propagation with view selection, refinement, the local disparity sweep
-// and COLMAP-style output filtering. All state lives in PassParams' arrays.
+// once for the CPU driver and the CUDA kernels: the cost of a hypothesis in
+// every view (one plane, or a batch of candidate planes scored together), its
+// view-weighted aggregate with an early stop, initialisation, and the update
+// of a pixel by propagation with view selection and refinement. The local
+// disparity sweep (local_refine.h) and the output filter (output_filter.h)
+// build on these costs. All state lives in PassParams' arrays.
 #pragma once
 
 #include <cstdint>
@@ -117,29 +120,13 @@ MSP_HD float GeometricTerm(const PassParams& p, int j, int col, int row, float d
          ComposedReprojectionError(s.rel, s.camera, s.depth, col, row, depth, p.geom_max_error);
 }
 
-// The NCC cost alone of a prepared hypothesis at the centre of window w in source view j.
+// The photometric cost (1 - NCC) of a prepared hypothesis at the centre of
+// window w in source view j; kMaxCost for a plane seen edge-on.
 MSP_HD float PhotometricViewCost(const PassParams& p, const RefWindow& w, int j,
                                  const PreparedPlane& plane) {
   if (!plane.valid) return kMaxCost;
   const Mat3 H = WarpHomography(p.src[j].rel, plane.warp);
   return WindowNccCost(w, p.ref_image, p.src[j].image, H, p.ncc);
-}
-
-// Cost of a prepared hypothesis at the centre of window w in source view j.
-MSP_HD float ViewCost(const PassParams& p, const RefWindow& w, int j, const PreparedPlane& plane) {
-  if (!plane.valid) return kMaxCost;
-  return PhotometricViewCost(p, w, j, plane) + GeometricTerm(p, j, w.col, w.row, plane.depth);
-}
-
-MSP_HD float ViewCost(const PassParams& p, const RefWindow& w, int j, const PlaneHypothesis& h) {
-  return ViewCost(p, w, j, PreparePlane(p, w.col, w.row, h));
-}
-
-// One-off form for tests and tools: prepares the window itself.
-MSP_HD float ViewCost(const PassParams& p, int j, int col, int row, const PlaneHypothesis& h) {
-  RefWindow w;
-  PrepareWindow(p, col, row, &w);
-  return ViewCost(p, w, j, h);
 }
 
 // True when view j takes part: its weight is non-zero, or there are no weights.
@@ -159,7 +146,8 @@ MSP_HD void GeometricTerms(const PassParams& p, int col, int row, const Prepared
 }
 
 // Costs of h in every view whose weight is non-zero (all views when weights
-// is null): ViewCost of each view, the geometric terms first (GeometricTerms).
+// is null), kMaxCost in the others: PhotometricViewCost + GeometricTerm of
+// each view, the geometric terms first (GeometricTerms).
 MSP_HD void ViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypothesis& h,
                       const float* weights, float* costs) {
   const PreparedPlane plane = PreparePlane(p, w.col, w.row, h);
@@ -214,8 +202,8 @@ MSP_HD float BoundedAggregateCost(const PassParams& p, int col, int row, const P
   return sum / total_weight;
 }
 
-// The NCC cost of a view, for BoundedAggregateCost.
-struct NccViewCost {
+// PhotometricViewCost as the per-view function of BoundedAggregateCost.
+struct PhotometricViewCostFn {
   const PassParams& p;
   const RefWindow& w;
   MSP_HD float operator()(int j, const PreparedPlane& plane, float, float) const {
@@ -228,8 +216,8 @@ struct NccViewCost {
 // round differently from it: compare its results with each other.)
 MSP_HD float AggregateViewCostBelow(const PassParams& p, const RefWindow& w,
                                     const PlaneHypothesis& h, const float* weights, float limit) {
-  const NccViewCost ncc{p, w};
-  return BoundedAggregateCost(p, w.col, w.row, h, weights, limit, ncc);
+  const PhotometricViewCostFn photometric{p, w};
+  return BoundedAggregateCost(p, w.col, w.row, h, weights, limit, photometric);
 }
 
 static_assert(kNumPropagationCandidates <= kWindowLanes, "one vector lane per candidate");
@@ -316,18 +304,10 @@ MSP_HD void CandidateViewCosts(const PassParams& p, const RefWindow& w, const Pl
   }
 }
 
-// The NCC costs alone (ViewCosts without the geometric term).
-MSP_HD void PhotometricViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypothesis& h,
-                                 const float* weights, float* costs) {
-  const PreparedPlane plane = PreparePlane(p, w.col, w.row, h);
-  for (int j = 0; j < p.num_src; ++j) {
-    costs[j] = IsWeighted(weights, j) ? PhotometricViewCost(p, w, j, plane) : kMaxCost;
-  }
-}
-
 // The view-weighted mean of h's geometric terms (0 in photometric passes, or
-// for a plane seen edge-on, whose ViewCost is kMaxCost alone): with ViewCosts
-// = PhotometricViewCosts + this, one photometric sweep serves both costs.
+// for a plane seen edge-on, whose ViewCosts are kMaxCost without it): the
+// aggregate of ViewCosts is that of the PhotometricViewCost of each view plus
+// this, so one photometric sweep serves both costs.
 MSP_HD float MeanGeometricTerm(const PassParams& p, int col, int row, const PlaneHypothesis& h,
                                const float* weights) {
   if (!p.geometric) return 0.0f;

@@ -26,30 +26,30 @@ const NccParams kBilateral{5, 1, 1, 5.0f, 0.2f};
 
 TEST(Ncc, PatchAgainstItselfCostsZero) {
   const std::vector<float> img = Noise(1.0f, 0.0f);
-  EXPECT_NEAR(NccCost(View(img), View(img), kIdentity, 20, 15, kUniform), 0.0f, 1e-5f);
-  EXPECT_NEAR(NccCost(View(img), View(img), kIdentity, 20, 15, kBilateral), 0.0f, 1e-5f);
+  EXPECT_NEAR(GeneralNccCost(View(img), View(img), kIdentity, 20, 15, kUniform), 0.0f, 1e-5f);
+  EXPECT_NEAR(GeneralNccCost(View(img), View(img), kIdentity, 20, 15, kBilateral), 0.0f, 1e-5f);
   // Near the border only the samples inside the reference count.
-  EXPECT_NEAR(NccCost(View(img), View(img), kIdentity, 1, 2, kUniform), 0.0f, 1e-5f);
+  EXPECT_NEAR(GeneralNccCost(View(img), View(img), kIdentity, 1, 2, kUniform), 0.0f, 1e-5f);
 }
 
 TEST(Ncc, InvariantToGainAndOffset) {
   const std::vector<float> a = Noise(1.0f, 0.0f);
   const std::vector<float> b = Noise(0.4f, 0.3f);
-  EXPECT_NEAR(NccCost(View(a), View(b), kIdentity, 20, 15, kUniform), 0.0f, 1e-4f);
+  EXPECT_NEAR(GeneralNccCost(View(a), View(b), kIdentity, 20, 15, kUniform), 0.0f, 1e-4f);
 }
 
 TEST(Ncc, NegatedPatchCostsTwo) {
   const std::vector<float> a = Noise(1.0f, 0.0f);
   const std::vector<float> b = Noise(-1.0f, 1.0f);
-  EXPECT_NEAR(NccCost(View(a), View(b), kIdentity, 20, 15, kUniform), 2.0f, 1e-4f);
+  EXPECT_NEAR(GeneralNccCost(View(a), View(b), kIdentity, 20, 15, kUniform), 2.0f, 1e-4f);
 }
 
 TEST(Ncc, TexturelessOrOutsideIsMaxCost) {
   const std::vector<float> a = Noise(1.0f, 0.0f);
   const std::vector<float> flat(kW * kH, 0.5f);
-  EXPECT_EQ(NccCost(View(a), View(flat), kIdentity, 20, 15, kUniform), kMaxCost);
+  EXPECT_EQ(GeneralNccCost(View(a), View(flat), kIdentity, 20, 15, kUniform), kMaxCost);
   const Mat3 shift = {{1, 0, 100, 0, 1, 0, 0, 0, 1}};  // centre lands outside the source
-  EXPECT_EQ(NccCost(View(a), View(a), shift, 20, 15, kUniform), kMaxCost);
+  EXPECT_EQ(GeneralNccCost(View(a), View(a), shift, 20, 15, kUniform), kMaxCost);
 }
 
 TEST(Ncc, SubpixelShiftMatchesBilinearWarp) {
@@ -63,7 +63,7 @@ TEST(Ncc, SubpixelShiftMatchesBilinearWarp) {
     }
   }
   const Mat3 H = {{1, 0, 0.5f, 0, 1, 0, 0, 0, 1}};
-  EXPECT_NEAR(NccCost(View(ramp), View(shifted), H, 20, 15, kUniform), 0.0f, 2e-3f);
+  EXPECT_NEAR(GeneralNccCost(View(ramp), View(shifted), H, 20, 15, kUniform), 0.0f, 2e-3f);
 }
 
 }  // namespace

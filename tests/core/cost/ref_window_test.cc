@@ -102,11 +102,11 @@ TEST(RefWindow, CostEqualsTheGeneralNcc) {
            {Warp(0.3f, -0.4f), Warp(1.7f, 0.6f), Warp(-2.5f, 3.2f), Warp(-6.0f, 4.5f)}) {
         if (OnTheBorder(w, H)) continue;
         for (const std::vector<float>* s : {&src, &same}) {
-          const float general = NccCost(View(ref), View(*s), H, col, row, kUniform);
+          const float general = GeneralNccCost(View(ref), View(*s), H, col, row, kUniform);
           EXPECT_NEAR(WindowNccCost(w, View(ref), View(*s), H, kUniform), general, 2e-4f)
               << col << "," << row;
           SourceSums sums;
-          const bool whole = WindowSums(w, View(*s), H, &sums);
+          const bool whole = WholeWindowSums(w, View(*s), H, &sums);
           fast += whole;
           partial += !whole && general < kMaxCost;
         }
@@ -118,8 +118,8 @@ TEST(RefWindow, CostEqualsTheGeneralNcc) {
 }
 
 // Windows over the reference border, and the corner, whose centre lies
-// outside its own samples: the same cost as NccCost, which skips the samples
-// outside the reference.
+// outside its own samples: the same cost as GeneralNccCost, which skips the
+// samples outside the reference.
 TEST(RefWindow, BorderWindowCostEqualsTheGeneralNcc) {
   const std::vector<float> ref = Noise(7);
   const std::vector<float> src = Noise(8);
@@ -134,7 +134,7 @@ TEST(RefWindow, BorderWindowCostEqualsTheGeneralNcc) {
       for (const Mat3& H : {Warp(0.3f, -0.4f), Warp(-0.6f, 0.7f), Warp(1.7f, 0.6f)}) {
         if (OnTheBorder(w, H)) continue;
         for (const std::vector<float>* s : {&src, &same}) {
-          const float general = NccCost(View(ref), View(*s), H, col, row, kUniform);
+          const float general = GeneralNccCost(View(ref), View(*s), H, col, row, kUniform);
           EXPECT_NEAR(WindowNccCost(w, View(ref), View(*s), H, kUniform), general, 2e-4f)
               << col << "," << row;
           ++compared;
@@ -153,8 +153,8 @@ TEST(RefWindow, BorderWindowCostEqualsTheGeneralNcc) {
   PrepareRefWindow(View(ref), 0, 0, 5, 2, 0, &corner);
   const Mat3 half_left_up = {{1, 0, -0.5f, 0, 1, -0.5f, 0, 0, 1}};
   SourceSums sums;
-  ASSERT_TRUE(WindowSumsScalar(corner, View(src), half_left_up, &sums));
-  EXPECT_EQ(NccCost(View(ref), View(src), half_left_up, 0, 0, kUniform), kMaxCost);
+  ASSERT_TRUE(WholeWindowSumsScalar(corner, View(src), half_left_up, &sums));
+  EXPECT_EQ(GeneralNccCost(View(ref), View(src), half_left_up, 0, 0, kUniform), kMaxCost);
   EXPECT_EQ(WindowNccCost(corner, View(ref), View(src), half_left_up, kUniform), kMaxCost);
 }
 
@@ -189,7 +189,7 @@ TEST(RefWindow, BatchOfWarpsCostsWhatEachWarpCostsAlone) {
       for (int l = 0; l < 7; ++l) {
         EXPECT_NEAR(costs[l], alone[l], 2e-4f) << col << "," << row << " lane " << l;
         SourceSums sums;
-        partial += !WindowSumsScalar(w, View(src), H[l], &sums) &&
+        partial += !WholeWindowSumsScalar(w, View(src), H[l], &sums) &&
                    CentreInSource(H[l], View(src), col, row) && costs[l] < kMaxCost;
         ++compared;
       }
@@ -262,7 +262,7 @@ TEST(RefWindow, WholeBoxLanesVouchOnlyForBoxesInside) {
       H[l].m[6] = 0.04f * RandomUniform(key, 2) - 0.02f;  // strongly projective, at times behind
       H[l].m[7] = 0.04f * RandomUniform(key, 3) - 0.02f;
     }
-    const WarpLanes warp = MakeLaneWarps(H, 0xffu, src);
+    const WarpLanes warp = WarpPerLane(H, 0xffu, src);
     const float x0 = 3.0f + trial % 20, y0 = 2.0f + trial % 15;
     const uint32_t whole = WholeBoxLanes(warp, x0, x0 + 10.0f, y0, y0 + 10.0f);
     uint32_t inside = 0xffu;
@@ -298,7 +298,7 @@ TEST(RefWindow, CentreTestDropsOnlyLanesThatCostMax) {
     const int col = trial % kW, row = (7 * trial) % kH;
     RefWindow w;
     PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
-    const uint32_t near = CentreNearSourceLanes(MakeLaneWarps(H, 0xffu, View(src)), col, row);
+    const uint32_t near = CentreNearSourceLanes(WarpPerLane(H, 0xffu, View(src)), col, row);
     for (int l = 0; l < kWindowLanes; ++l) {
       if ((near >> l) & 1u) {
         ++kept;
@@ -309,7 +309,7 @@ TEST(RefWindow, CentreTestDropsOnlyLanesThatCostMax) {
       EXPECT_FALSE(CentreInSource(H[l], View(src), col, row)) << "trial " << trial << " lane " << l;
       // (A window clipped by the reference border may not hold its centre.)
       if (!w.clipped) {
-        EXPECT_FALSE(WindowSumsScalar(w, View(src), H[l], &sums)) << "lane " << l;
+        EXPECT_FALSE(WholeWindowSumsScalar(w, View(src), H[l], &sums)) << "lane " << l;
       }
       EXPECT_EQ(WindowNccCost(w, View(ref), View(src), H[l], kUniform), kMaxCost);
     }
@@ -328,7 +328,7 @@ TEST(RefWindow, PartialWindowNeedsItsCentreAndHalfTheSamples) {
   const Mat3 right_third_out = {{1, 0, 27.0f, 0, 1, 0, 0, 0, 1}};
   EXPECT_LT(WindowNccCost(w, View(img), View(img), right_third_out, kUniform), kMaxCost);
   EXPECT_NEAR(WindowNccCost(w, View(img), View(img), right_third_out, kUniform),
-              NccCost(View(img), View(img), right_third_out, 20, 15, kUniform), 2e-4f);
+              GeneralNccCost(View(img), View(img), right_third_out, 20, 15, kUniform), 2e-4f);
   const Mat3 centre_out = {{1, 0, 28.0f, 0, 1, 0, 0, 0, 1}};  // centre at x = 48
   EXPECT_EQ(WindowNccCost(w, View(img), View(img), centre_out, kUniform), kMaxCost);
 }
@@ -339,8 +339,8 @@ TEST(RefWindow, ScalarAndVectorSumsAgree) {
   RefWindow w;
   PrepareRefWindow(View(ref), 24, 18, 5, 2, 0, &w);
   SourceSums scalar, vector;
-  ASSERT_TRUE(WindowSumsScalar(w, View(src), Warp(0.3f, 0.2f), &scalar));
-  ASSERT_TRUE(WindowSums(w, View(src), Warp(0.3f, 0.2f), &vector));
+  ASSERT_TRUE(WholeWindowSumsScalar(w, View(src), Warp(0.3f, 0.2f), &scalar));
+  ASSERT_TRUE(WholeWindowSums(w, View(src), Warp(0.3f, 0.2f), &vector));
   EXPECT_NEAR(scalar.s, vector.s, 1e-4f);
   EXPECT_NEAR(scalar.ss, vector.ss, 1e-4f);
   EXPECT_NEAR(scalar.rs, vector.rs, 1e-5f);
@@ -353,12 +353,12 @@ TEST(RefWindow, SampleOutsideTheSourceRefusesTheFastPath) {
   SourceSums sums;
   const Mat3 near_right_edge = {
       {1, 0, kW - 1.0f - 25.5f, 0, 1, 0, 0, 0, 1}};  // last column at 46.5
-  EXPECT_TRUE(WindowSumsScalar(w, View(img), near_right_edge, &sums));
+  EXPECT_TRUE(WholeWindowSumsScalar(w, View(img), near_right_edge, &sums));
   const Mat3 on_right_edge = {{1, 0, kW - 1.0f - 25.0f, 0, 1, 0, 0, 0, 1}};  // last column at 47
-  EXPECT_FALSE(WindowSumsScalar(w, View(img), on_right_edge, &sums));
-  EXPECT_FALSE(WindowSums(w, View(img), on_right_edge, &sums));
+  EXPECT_FALSE(WholeWindowSumsScalar(w, View(img), on_right_edge, &sums));
+  EXPECT_FALSE(WholeWindowSums(w, View(img), on_right_edge, &sums));
   const Mat3 behind = {{1, 0, 0, 0, 1, 0, 0, 0, -1}};
-  EXPECT_FALSE(WindowSums(w, View(img), behind, &sums));
+  EXPECT_FALSE(WholeWindowSums(w, View(img), behind, &sums));
 }
 
 TEST(RefWindow, FlatReferenceCostsMax) {

@@ -41,7 +41,7 @@ TEST(AnchorWindows, CostSumEqualsTheGeneralCostOfEachAnchor) {
       for (const std::vector<float>* s : {&src, &ref}) {
         float expected = 0.0f;
         for (int a = 0; a < count; ++a) {
-          expected += NccCost(View(ref), View(*s), H, kCols[a], kRows[a], kAnchorNcc);
+          expected += GeneralNccCost(View(ref), View(*s), H, kCols[a], kRows[a], kAnchorNcc);
         }
         EXPECT_NEAR(AnchorCostSum(w, View(ref), View(*s), H, kAnchorNcc), expected, 1e-4f);
       }
@@ -74,7 +74,7 @@ TEST(AnchorWindows, ScalarAndVectorSumsAgree) {
 }
 
 // A window that leaves the source in part is scored on its valid samples, as
-// NccCost scores it: here 6 of 9, enough for a real cost.
+// GeneralNccCost scores it: here 6 of 9, enough for a real cost.
 TEST(AnchorWindows, PartialWindowCostsAsTheGeneralCost) {
   const std::vector<float> ref = Noise(5), src = Noise(6);
   const int col[1] = {57}, row[1] = {10};
@@ -85,7 +85,7 @@ TEST(AnchorWindows, PartialWindowCostsAsTheGeneralCost) {
   AnchorSums sums;
   AnchorSumsOf(w, View(src), H, &sums);
   EXPECT_EQ(sums.inside, 0u);
-  const float expected = NccCost(View(ref), View(src), H, col[0], row[0], kAnchorNcc);
+  const float expected = GeneralNccCost(View(ref), View(src), H, col[0], row[0], kAnchorNcc);
   EXPECT_LT(expected, kMaxCost);
   EXPECT_NEAR(AnchorCostSum(w, View(ref), View(src), H, kAnchorNcc), expected, 1e-5f);
 }
@@ -122,7 +122,8 @@ TEST(AnchorWindows, PairLanesCostWhatEachPairCostsAlone) {
   for (int l = 0; l < kWindowLanes; ++l) {
     const Mat3 H = WarpHomography(rel, warps[l]);
     const int a = anchors[l];
-    EXPECT_NEAR(costs[l], NccCost(View(ref), View(src), H, kCols[a], kRows[a], kAnchorNcc), 1e-4f)
+    EXPECT_NEAR(costs[l], GeneralNccCost(View(ref), View(src), H, kCols[a], kRows[a], kAnchorNcc),
+                1e-4f)
         << "lane " << l;
   }
   EXPECT_NE(costs[0], costs[5]);  // anchor 4 under two planes

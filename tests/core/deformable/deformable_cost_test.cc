@@ -30,6 +30,15 @@ AnchorSet RingOfAnchors() {
   return AnchorsAt(ring, kMaxAnchors, kCol, kRow);
 }
 
+// The conventional cost of h in source view j at (col, row): its entry of ViewCosts.
+float ConventionalCost(const PassParams& p, int j, int col, int row, const PlaneHypothesis& h) {
+  RefWindow w;
+  PrepareWindow(p, col, row, &w);
+  float costs[kMaxSourceViews];
+  ViewCosts(p, w, h, nullptr, costs);
+  return costs[j];
+}
+
 // Anchor windows sum their samples in another order than the centre window
 // (or take the general form), so equal windows agree to float rounding.
 constexpr float kRounding = 1e-5f;
@@ -50,7 +59,7 @@ TEST(DeformableCost, AnchorsAtTheCentreGiveTheConventionalCost) {
   for (float depth : {4.0f, 4.1f, 3.5f}) {  // a good and two wrong hypotheses
     const PlaneHypothesis h{depth, kFrontoParallel};
     EXPECT_NEAR(DeformableViewCost(s.params, 0, kCol, kRow, h, a, SameWindow(s.params)),
-                ViewCost(s.params, 0, kCol, kRow, h), kRounding);
+                ConventionalCost(s.params, 0, kCol, kRow, h), kRounding);
   }
 }
 
@@ -60,7 +69,7 @@ TEST(DeformableCost, NoAnchorsIsExactlyTheConventionalCost) {
   AnchorSet none{};
   const PlaneHypothesis h{4.2f, kFrontoParallel};
   EXPECT_EQ(DeformableViewCost(s.params, 0, kCol, kRow, h, none, DefaultDeformableParams()),
-            ViewCost(s.params, 0, kCol, kRow, h));
+            ConventionalCost(s.params, 0, kCol, kRow, h));
 }
 
 TEST(DeformableCost, GeometricTermAsInTheConventionalCost) {
@@ -73,11 +82,11 @@ TEST(DeformableCost, GeometricTermAsInTheConventionalCost) {
   const int zero[kMaxAnchors][2] = {};
   const AnchorSet a = AnchorsAt(zero, kMaxAnchors, kCol, kRow);
   const PlaneHypothesis h{4.0f, kFrontoParallel};
-  const float conventional = ViewCost(s.params, 0, kCol, kRow, h);
+  const float conventional = ConventionalCost(s.params, 0, kCol, kRow, h);
   EXPECT_NEAR(DeformableViewCost(s.params, 0, kCol, kRow, h, a, SameWindow(s.params)), conventional,
               kRounding);
   s.params.geometric = 0;
-  EXPECT_NEAR(conventional - ViewCost(s.params, 0, kCol, kRow, h),
+  EXPECT_NEAR(conventional - ConventionalCost(s.params, 0, kCol, kRow, h),
               s.params.geom_lambda * s.params.geom_max_error, 1e-5f);
 }
 
@@ -97,8 +106,8 @@ TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
   PrepareDeformableWindows(s.params, kCol, kRow, a, d, &windows);
   DeformableViewCosts(s.params, windows, truth, d, weights, costs, conventional);
   EXPECT_EQ(costs[0], DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d));
-  // The conventional cost comes out on the way, equal to ViewCost's.
-  EXPECT_EQ(conventional[0], ViewCost(s.params, 0, kCol, kRow, truth));
+  // The conventional cost comes out on the way, equal to ViewCosts'.
+  EXPECT_EQ(conventional[0], ConventionalCost(s.params, 0, kCol, kRow, truth));
   const float skip[1] = {0.0f};
   DeformableViewCosts(s.params, windows, truth, d, skip, costs, conventional);
   EXPECT_EQ(costs[0], kMaxCost);
@@ -195,7 +204,7 @@ TEST(DeformableCost, TexturedAnchorsRescueATexturelessCentre) {
   const AnchorSet a = RingOfAnchors();
   const PlaneHypothesis truth{4.0f, kFrontoParallel};
   const PlaneHypothesis wrong{4.4f, kFrontoParallel};
-  EXPECT_EQ(ViewCost(s.params, 0, kCol, kRow, truth), kMaxCost);
+  EXPECT_EQ(ConventionalCost(s.params, 0, kCol, kRow, truth), kMaxCost);
   const DeformableParams d = DefaultDeformableParams();
   const float good = DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d);
   EXPECT_NEAR(good, d.lambda * kMaxCost, 0.05f);  // only the centre term is lost

@@ -106,8 +106,11 @@ TEST(Reliability, BlockScoredCurveEqualsEachSampleAlone) {
       const PlaneHypothesis h = sampler.Plane(k);
       float alone = kMaxCost;
       if (DepthInRange(s.params, h.depth)) {
+        const PreparedPlane plane = PreparePlane(s.params, col, 75, h);
         float costs[kMaxSourceViews];
-        PhotometricViewCosts(s.params, w, h, sampler.weights(), costs);
+        for (int j = 0; j < s.params.num_src; ++j) {
+          costs[j] = PhotometricViewCost(s.params, w, j, plane);
+        }
         alone = AggregateCost(costs, sampler.weights(), s.params.num_src);
         ++in_range;
       }

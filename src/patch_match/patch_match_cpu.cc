@@ -17,6 +17,7 @@
 #include "deformable/deformable_sweeps.h"
 #include "deformable/nearest_reliable.h"
 #include "patch_match/image_pyramid.h"
+#include "patch_match/pass_schedule.h"
 #include "patch_match/state_cache.h"
 #include "patch_match/sweeps.h"
 #include "prior/prior_driver.h"
@@ -24,16 +25,11 @@
 namespace msp {
 namespace {
 
-// APD schedule: 3 red-black iterations per pass, 3 geometric passes per round.
-constexpr int kIterationsPerPass = 3;
-constexpr int kNumGeometricPasses = 3;
 // Refinement perturbation: +-2% depth, +-1.8 degrees of normal (ACMM).
 constexpr float kPerturbDepth = 0.02f;
 constexpr float kPerturbNormalDegrees = 1.8f;
 constexpr float kDegreesToRadians = 3.14159265358979f / 180.0f;
 constexpr double kBytesPerGigabyte = 1024.0 * 1024.0 * 1024.0;
-// Pass ids inside a round; rounds are spaced so (round, pass) pairs are unique.
-constexpr uint32_t kPassesPerRoundStride = 8;
 
 // Images and cameras of every processed view at one pyramid level; colour
 // only for reference views, and only when the segmentation prior runs.
@@ -89,9 +85,7 @@ class CpuRunner {
         sink_(sink),
         threads_(ResolveNumThreads(msp.num_threads)),
         cache_(static_cast<size_t>(pm.cache_size * kBytesPerGigabyte), scratch_dir) {
-    // The prior confines anchors, so it only runs with deformable patches.
-    if (msp.deformable && msp.segmentation_prior)
-      prior_.reset(new PriorDriver(views, msp, threads_));
+    if (SegmentationPriorEnabled(msp)) prior_.reset(new PriorDriver(views, msp, threads_));
   }
 
   void Run() {
@@ -108,11 +102,12 @@ class CpuRunner {
         max_h = std::max(max_h, views_[v].camera.height);
       }
     }
-    const int num_rounds = 1 + NumHalvings(max_w, max_h, msp_.coarsest_image_size);
-    std::printf("CPU back-end: %zu problems, %d round(s), %d thread(s)\n", run_.size(), num_rounds,
-                threads_);
+    const std::vector<Pass> schedule = BuildPassSchedule(pm_, msp_, max_w, max_h);
+    std::printf("CPU back-end: %zu problems, %d round(s), %d thread(s)\n", run_.size(),
+                schedule.front().num_rounds, threads_);
+    for (const Pass& pass : schedule) std::printf("  %s\n", ToString(pass).c_str());
     start_ = std::chrono::steady_clock::now();
-    for (int round = 0; round < num_rounds; ++round) RunRound(round, num_rounds);
+    for (const Pass& pass : schedule) RunPass(pass);
     if (prior_ != nullptr) {
       std::printf("Segmentation prior: %d calls, %.2f s, %.1f%% of the %.2f s of the passes\n",
                   prior_->NumCalls(), prior_->TotalSeconds(),
@@ -159,20 +154,20 @@ class CpuRunner {
     return level;
   }
 
-  core::PassParams MakeParams(const Level& level, const Problem& problem, bool geometric,
-                              uint32_t pass_id, const std::map<int, DenseMap>& prev_depth,
-                              PixelState& state) const {
+  core::PassParams MakeParams(const Problem& problem, const Pass& pass,
+                              const std::map<int, DenseMap>& prev_depth, PixelState& state) const {
+    const bool geometric = pass.kind == PassKind::kGeometric;
     core::PassParams p{};
-    p.ref_camera = level.cameras.at(problem.ref);
-    const DenseMap& ref = level.gray.at(problem.ref);
+    p.ref_camera = level_->cameras.at(problem.ref);
+    const DenseMap& ref = level_->gray.at(problem.ref);
     p.ref_image = core::ImageView{ref.data.data(), ref.width, ref.height, ref.width};
     p.num_src = std::min<int>(static_cast<int>(problem.srcs.size()), core::kMaxSourceViews);
     for (int j = 0; j < p.num_src; ++j) {
       const int v = problem.srcs[j];
       core::SourceView& s = p.src[j];
-      s.camera = level.cameras.at(v);
+      s.camera = level_->cameras.at(v);
       s.rel = core::ComputeRelativePose(p.ref_camera, s.camera);
-      const DenseMap& img = level.gray.at(v);
+      const DenseMap& img = level_->gray.at(v);
       s.image = core::ImageView{img.data.data(), img.width, img.height, img.width};
       s.depth = core::ImageView{nullptr, 0, 0, 0};
       auto it = prev_depth.find(v);
@@ -192,83 +187,80 @@ class CpuRunner {
     p.perturb_normal = kPerturbNormalDegrees * kDegreesToRadians;
     p.seed = static_cast<uint32_t>(msp_.seed);
     p.image_id = static_cast<uint32_t>(problem.ref);
-    p.pass_id = pass_id;
+    p.pass_id = pass.id;
     p.state = state.View();
     return p;
   }
 
-  void RunRound(int round, int num_rounds) {
-    const int halvings = num_rounds - 1 - round;
-    const Level level = BuildLevel(halvings);
-    const Level* previous = coarser_.get();
-    const int num_passes = 1 + (pm_.geom_consistency ? kNumGeometricPasses : 0);
-    const bool last_round = round == num_rounds - 1;
+  // One pass over every problem; a round's first pass starts the round.
+  void RunPass(const Pass& pass) {
+    if (pass.index == 0) StartRound(pass);
+    // Jacobi: every problem reads its sources' depths as they were before this pass.
+    const std::map<int, DenseMap> prev_depth =
+        pass.kind == PassKind::kGeometric ? CurrentDepths() : std::map<int, DenseMap>();
+    for (size_t n = 0; n < run_.size(); ++n) RunProblemPass(pass, n, prev_depth);
+  }
+
+  // The round's images and cameras; the previous round's become the coarser level.
+  void StartRound(const Pass& pass) {
+    coarser_ = std::move(level_);
+    level_.reset(new Level(BuildLevel(pass.halvings)));
     if (prior_ != nullptr) prior_->StartRound();
-    for (int pass = 0; pass < num_passes; ++pass) {
-      const bool geometric = pass > 0;
-      // Jacobi: every problem reads its sources' depths as they were before this pass.
-      std::map<int, DenseMap> prev_depth;
-      if (geometric) {
-        for (int k : run_) {
-          const PixelState& s = cache_.Get(problems_[k].ref);
-          DenseMap d(s.width, s.height, 1);
-          d.data = s.depth;
-          prev_depth.emplace(problems_[k].ref, std::move(d));
-        }
-      }
-      for (size_t n = 0; n < run_.size(); ++n) {
-        const Problem& problem = problems_[run_[n]];
-        const auto t0 = std::chrono::steady_clock::now();
-        const uint32_t pass_id = static_cast<uint32_t>(round) * kPassesPerRoundStride + pass;
-        PixelState state = PrepareState(level, previous, problem, round, pass);
-        const core::PassParams params =
-            MakeParams(level, problem, geometric, pass_id, prev_depth, state);
-        if (round == 0 && pass == 0) {
-          InitializeState(params, threads_);
-        } else {
-          ScoreState(params, threads_);
-        }
-        const bool final_pass = last_round && pass == num_passes - 1;
-        const bool deformable = msp_.deformable && !(round == 0 && pass == 0);
-        // The prior's edges confine the passes after the one that made them,
-        // so none are made in the final pass.
-        const bool run_prior = prior_ != nullptr && deformable && !final_pass;
-        if (deformable) {
-          // The previous pass of this image (the last of the coarser round at a round start).
-          RunDeformableIterations(params, round, pass > 0 ? pass - 1 : num_passes - 1,
-                                  std::move(state.classes), state.edges,
-                                  run_prior ? &prior_anchors_ : nullptr);
-          state.classes.clear();
-        } else {
-          RunCheckerboardIterations(params, kIterationsPerPass, threads_);
-        }
-        const auto refine_start = std::chrono::steady_clock::now();
-        MedianFilterState(params, threads_);
-        if (msp_.deformable && pass + 1 < num_passes) {
-          // The next pass of the round starts by classifying these planes.
-          state.classes = LocalRefineAndClassifyState(params, ReliabilityAfter(pass), threads_);
-        } else {
-          LocalRefineState(params, threads_);
-        }
-        const double refine_seconds = SecondsSince(refine_start);
-        if (run_prior) RunPrior(level, problem, pass_id, round, prior_anchors_, &state);
-        const bool preview = final_pass && prior_ != nullptr && msp_.write_previews &&
-                             !sink_.HasFinalOutput(problem.ref);
-        if (last_round) WriteOutputs(params, problem, pass, num_passes);
-        if (preview) WritePreview(level, problem, state);
-        cache_.Put(problem.ref, std::move(state));
-        cache_.EnforceBudget(problem.ref);
-        const double seconds = SecondsSince(t0);
-        std::printf(
-            "Round %d/%d, %s pass %d, image %zu/%zu [%s] %dx%d: %.2f s (filter and local refine "
-            "%.2f s; elapsed %.1f s)\n",
-            round + 1, num_rounds, geometric ? "geometric" : "photometric", pass + 1, n + 1,
-            run_.size(), views_[problem.ref].name.c_str(), params.state.width, params.state.height,
-            seconds, refine_seconds, Elapsed());
-        std::fflush(stdout);
-      }
+  }
+
+  // The depth map of every problem's current state.
+  std::map<int, DenseMap> CurrentDepths() {
+    std::map<int, DenseMap> depths;
+    for (int k : run_) {
+      const PixelState& s = cache_.Get(problems_[k].ref);
+      DenseMap d(s.width, s.height, 1);
+      d.data = s.depth;
+      depths.emplace(problems_[k].ref, std::move(d));
     }
-    coarser_.reset(new Level(level));
+    return depths;
+  }
+
+  // Pass `pass` of problem run_[n]: start, sweeps, median filter and local
+  // refinement, then the prior and the outputs the pass names.
+  void RunProblemPass(const Pass& pass, size_t n, const std::map<int, DenseMap>& prev_depth) {
+    const Problem& problem = problems_[run_[n]];
+    const auto t0 = std::chrono::steady_clock::now();
+    PixelState state = PrepareState(pass, problem);
+    const core::PassParams params = MakeParams(problem, pass, prev_depth, state);
+    if (pass.start == PassStart::kRandom) {
+      InitializeState(params, threads_);
+    } else {
+      ScoreState(params, threads_);
+    }
+    if (pass.sweeps == PassSweeps::kDeformable) {
+      RunDeformableStep(pass, params, &state);
+    } else {
+      RunCheckerboardIterations(params, pass.iterations, threads_);
+    }
+    const auto refine_start = std::chrono::steady_clock::now();
+    MedianFilterState(params, threads_);
+    if (pass.refine_classifies) {
+      // The next pass of the round starts with the classes of these planes.
+      state.classes = LocalRefineAndClassifyState(params, ReliabilityAfter(pass.index), threads_);
+    } else {
+      LocalRefineState(params, threads_);
+    }
+    const double refine_seconds = SecondsSince(refine_start);
+    if (pass.prior) RunPrior(pass, problem, &state);
+    // Asked before the outputs are written: afterwards the image has them.
+    const bool preview = pass.preview && !sink_.HasFinalOutput(problem.ref);
+    if (pass.output != PassOutput::kNone) WriteOutputs(pass, params, problem);
+    if (preview) WritePreview(problem, state);
+    cache_.Put(problem.ref, std::move(state));
+    cache_.EnforceBudget(problem.ref);
+    std::printf(
+        "Round %d/%d, %s pass %d, image %zu/%zu [%s] %dx%d: %.2f s (filter and local refine "
+        "%.2f s; elapsed %.1f s)\n",
+        pass.round + 1, pass.num_rounds,
+        pass.kind == PassKind::kGeometric ? "geometric" : "photometric", pass.index + 1, n + 1,
+        run_.size(), views_[problem.ref].name.c_str(), params.state.width, params.state.height,
+        SecondsSince(t0), refine_seconds, Elapsed());
+    std::fflush(stdout);
   }
 
   // The classification parameters after pass `finished_pass` of a round.
@@ -280,48 +272,65 @@ class CpuRunner {
     return reliability;
   }
 
-  // Deformable patch matching (algorithm.md 2): the state the previous pass
-  // left (upsampled at a round start) is classified, then unreliable pixels
-  // with anchors take the deformable update during the pass's iterations.
-  // `classes` are the classes the previous pass's local refinement computed
-  // (empty at a round start: they are computed here). With the segmentation
-  // prior, `edges` (PixelState::edges, empty until the prior first ran)
-  // confine the anchor search, and `prior_anchors` receives the anchors of
-  // the first iteration.
-  void RunDeformableIterations(const core::PassParams& params, int round, int finished_pass,
-                               std::vector<uint8_t> classes, const std::vector<uint8_t>& edges,
-                               std::vector<core::PriorAnchors>* prior_anchors) {
-    const bool classified = !classes.empty();
+  // The reliability maps the deformable step starts with: the classes the
+  // previous pass's local refinement left in `state`, or (at a round start)
+  // the state classified here.
+  ReliabilityMaps StartReliability(const Pass& pass, const core::PassParams& params,
+                                   PixelState* state) {
+    std::vector<uint8_t> classes = std::move(state->classes);
+    state->classes.clear();
+    if ((pass.classify_after < 0) == classes.empty()) {
+      throw std::logic_error("pass schedule and reliability classes of the state disagree");
+    }
+    if (pass.classify_after >= 0) {
+      return ClassifyState(params, ReliabilityAfter(pass.classify_after), threads_);
+    }
+    return MakeReliabilityMaps(std::move(classes), params.state.width, params.state.height,
+                               threads_);
+  }
+
+  // The confining edges of the segmentation prior in `settings`, when the
+  // prior has made edges for the image (PixelState::edges, empty until then).
+  void ConfineAnchors(const std::vector<uint8_t>& edges, const ReliabilityMaps& maps,
+                      DeformableSettings* settings) {
+    if (prior_ == nullptr || edges.empty()) return;
+    if (edges.size() != static_cast<size_t>(maps.width) * maps.height) {
+      throw std::logic_error("segmentation prior edges and pixel state differ in size");
+    }
+    // The packed bits: only kConfiningEdge confines.
+    confining_.resize(edges.size());
+    for (size_t i = 0; i < edges.size(); ++i) confining_[i] = edges[i] & kConfiningEdge;
+    settings->edges = core::BoundaryView{confining_.data(), maps.width, maps.height, maps.width};
+    nearest_edge_ = NearestMarkedPixels(confining_.data(), maps.width, maps.height, threads_);
+    settings->nearest_edge = nearest_edge_.data();
+  }
+
+  // The deformable step of a pass (algorithm.md 2): the state the previous
+  // pass left (upsampled at a round start) is classified, then unreliable
+  // pixels with anchors take the deformable update during the pass's
+  // iterations. The prior's edges of the image confine the anchor search;
+  // when the prior runs after the pass, prior_anchors_ receives the anchors
+  // of the first iteration.
+  void RunDeformableStep(const Pass& pass, const core::PassParams& params, PixelState* state) {
     const auto classify_start = std::chrono::steady_clock::now();
-    const ReliabilityMaps maps =
-        !classified ? ClassifyState(params, ReliabilityAfter(finished_pass), threads_)
-                    : MakeReliabilityMaps(std::move(classes), params.state.width,
-                                          params.state.height, threads_);
+    const ReliabilityMaps maps = StartReliability(pass, params, state);
     const double classify_seconds = SecondsSince(classify_start);
     DeformableSettings settings;
-    settings.anchors = core::DefaultAnchorParams(round, params.depth_max - params.depth_min,
+    settings.anchors = core::DefaultAnchorParams(pass.round, params.depth_max - params.depth_min,
                                                  msp_.anchor_max_distance);
     settings.cost = core::DefaultDeformableParams();
-    if (prior_ != nullptr && !edges.empty()) {
-      if (edges.size() != static_cast<size_t>(maps.width) * maps.height) {
-        throw std::logic_error("segmentation prior edges and pixel state differ in size");
-      }
-      // The packed bits: only kConfiningEdge confines.
-      confining_.resize(edges.size());
-      for (size_t i = 0; i < edges.size(); ++i) confining_[i] = edges[i] & kConfiningEdge;
-      settings.edges = core::BoundaryView{confining_.data(), maps.width, maps.height, maps.width};
-      nearest_edge_ = NearestMarkedPixels(confining_.data(), maps.width, maps.height, threads_);
-      settings.nearest_edge = nearest_edge_.data();
-    }
+    ConfineAnchors(state->edges, maps, &settings);
     const DeformableStats stats = RunDeformableCheckerboardIterations(
-        params, maps, settings, kIterationsPerPass, threads_, &deformable_buffers_, prior_anchors);
+        params, maps, settings, pass.iterations, threads_, &deformable_buffers_,
+        pass.prior ? &prior_anchors_ : nullptr);
     const double pixels = static_cast<double>(maps.width) * maps.height;
     std::printf(
         "  reliable %.1f%%, unreliable %.1f%%, deformable updates %.1f%% of pixels; %s %.2f s, "
         "anchor search %.2f s, sweeps %.2f s\n",
         100.0 * maps.num_reliable / pixels, 100.0 * maps.num_unreliable / pixels,
-        100.0 * stats.anchored_updates / (pixels * kIterationsPerPass),
-        classified ? "nearest-reliable map (classes from the local refine)" : "classification",
+        100.0 * stats.anchored_updates / (pixels * pass.iterations),
+        pass.classify_after < 0 ? "nearest-reliable map (classes from the local refine)"
+                                : "classification",
         classify_seconds, stats.anchor_seconds, stats.sweep_seconds);
   }
 
@@ -330,8 +339,7 @@ class CpuRunner {
   // confine the following passes. The first call of an image has only the
   // photometric pass's depth, mostly noise where the prior matters
   // (textureless regions), so its CRF uses colour only.
-  void RunPrior(const Level& level, const Problem& problem, uint32_t pass_id, int round,
-                const std::vector<core::PriorAnchors>& anchors, PixelState* state) {
+  void RunPrior(const Pass& pass, const Problem& problem, PixelState* state) {
     DenseMap depth;
     const bool with_depth = !state->edges.empty();
     if (with_depth) {
@@ -340,51 +348,51 @@ class CpuRunner {
     }
     PriorPassInput input;
     input.view = problem.ref;
-    input.color = &level.color.at(problem.ref);
+    input.color = &level_->color.at(problem.ref);
     input.depth = with_depth ? &depth : nullptr;
     input.depth_min = problem.depth_min;
     input.depth_max = problem.depth_max;
-    input.anchors = &anchors;
+    input.anchors = &prior_anchors_;
     input.inlier_distance =
-        core::AnchorInlierThreshold(round, problem.depth_max - problem.depth_min);
-    input.pass_id = pass_id;
+        core::AnchorInlierThreshold(pass.round, problem.depth_max - problem.depth_min);
+    input.pass_id = pass.id;
     state->edges = prior_->Run(input);
   }
 
-  void WritePreview(const Level& level, const Problem& problem, const PixelState& state) {
+  void WritePreview(const Problem& problem, const PixelState& state) {
     if (state.edges.empty()) {
       std::printf("  no segmentation prior edges for %s (no deformable pass made any)\n",
                   views_[problem.ref].name.c_str());
     }
-    sink_.WritePriorPreview(problem.ref, level.color.at(problem.ref),
+    sink_.WritePriorPreview(problem.ref, level_->color.at(problem.ref),
                             UnpackEdgeBit(state.edges, kAggregatedEdge),
                             UnpackEdgeBit(state.edges, kRefinedEdge));
   }
 
   // The state a problem starts a pass with: fresh (first pass overall),
   // carried up from the coarser round, or the previous pass's.
-  PixelState PrepareState(const Level& level, const Level* previous, const Problem& problem,
-                          int round, int pass) {
-    const core::Camera& cam = level.cameras.at(problem.ref);
-    if (round == 0 && pass == 0) return PixelState(cam.width, cam.height);
-    PixelState state = cache_.Take(problem.ref);
-    if (pass == 0 && previous != nullptr) {
-      return UpsampleState(state, previous->cameras.at(problem.ref), cam);
+  PixelState PrepareState(const Pass& pass, const Problem& problem) {
+    const core::Camera& cam = level_->cameras.at(problem.ref);
+    switch (pass.start) {
+      case PassStart::kRandom:
+        return PixelState(cam.width, cam.height);
+      case PassStart::kUpsampled:
+        return UpsampleState(cache_.Take(problem.ref), coarser_->cameras.at(problem.ref), cam);
+      case PassStart::kPrevious:
+        break;
     }
-    return state;
+    return cache_.Take(problem.ref);
   }
 
-  void WriteOutputs(const core::PassParams& params, const Problem& problem, int pass,
-                    int num_passes) {
+  void WriteOutputs(const Pass& pass, const core::PassParams& params, const Problem& problem) {
     if (sink_.HasFinalOutput(problem.ref)) return;  // resumed run: keep what exists
-    const bool final_pass = pass == num_passes - 1;
     DenseMap depth, normal;
-    if (pm_.geom_consistency && pass == 0) {
+    if (pass.output == PassOutput::kUnfiltered) {
       // As COLMAP: unfiltered photometric maps, input of the geometric stage.
       ExtractMaps(params, nullptr, threads_, &depth, &normal);
       sink_.Write(problem.ref, "photometric", depth, normal);
+      return;
     }
-    if (!final_pass) return;
     core::FilterParams filter;
     filter.min_ncc = static_cast<float>(pm_.filter_min_ncc);
     filter.min_triangulation_angle =
@@ -405,7 +413,8 @@ class CpuRunner {
   const int threads_;
   StateCache cache_;
   std::vector<int> run_;
-  std::unique_ptr<Level> coarser_;
+  std::unique_ptr<Level> level_;          // the current round's
+  std::unique_ptr<Level> coarser_;        // the previous round's, null in the first round
   std::unique_ptr<PriorDriver> prior_;    // null = no segmentation prior
   std::vector<uint8_t> confining_;        // scratch: the confining bit of the current image
   std::vector<int> nearest_edge_;         // scratch: its nearest confining pixel of every pixel

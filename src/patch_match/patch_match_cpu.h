@@ -1,6 +1,7 @@
-// The CPU back-end: the APD pass schedule (coarse-to-fine rounds, each one
-// photometric pass and, with geom_consistency, three geometric passes) over
-// all problems, calling the per-pixel functions of src/core.
+// The CPU back-end: walks the APD pass schedule (pass_schedule.h:
+// coarse-to-fine rounds, each one photometric pass and, with
+// geom_consistency, three geometric passes) over all problems, calling the
+// per-pixel functions of src/core.
 #pragma once
 
 #include <string>

@@ -20,7 +20,7 @@ struct PixelState {
   std::vector<float> normal;  // 3 planes: nx, ny, nz
   std::vector<float> cost;
   std::vector<uint32_t> mask;
-  // Depth edges of the segmentation prior (bits of prior_edges.h); empty
+  // Depth edges of the segmentation prior (bits of prior/prior_driver.h); empty
   // until the prior first runs. Kept here so it spills and upsamples with
   // the planes it belongs to.
   std::vector<uint8_t> edges;

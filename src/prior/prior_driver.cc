@@ -1,10 +1,12 @@
 #include "prior/prior_driver.h"
 
+#include <cassert>
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
 
 #include "base/seconds_since.h"
+#include "prior/crf_refinement.h"
 #include "prior/multiscale_segmentation.h"
 
 namespace msp {
@@ -17,7 +19,60 @@ double EdgeShare(const std::vector<uint8_t>& packed) {
   return static_cast<double>(count) / packed.size();
 }
 
+// B' of eq. 5: the regions of the layers the anchors choose (eq. 4), merged.
+Segmentation AggregateByAnchors(const LabelLayers& layers, const PriorPassInput& input,
+                                const MspStereoOptions& options, SegmentationPriorTimes* times) {
+  auto start = std::chrono::steady_clock::now();
+  const std::vector<std::vector<uint8_t>> boundaries = ComputeBoundaryMaps(layers);
+  times->boundaries_s = SecondsSince(start);
+  start = std::chrono::steady_clock::now();
+  BestLayerOptions best_options;
+  best_options.ransac = core::PlaneRansacParams{input.inlier_distance, kBestLayerRansacIterations};
+  best_options.seed = static_cast<uint32_t>(options.seed);
+  best_options.image = static_cast<uint32_t>(input.view);
+  best_options.pass = input.pass_id;
+  best_options.num_threads = options.num_threads;
+  static const std::vector<core::PriorAnchors> kNoAnchors;
+  const std::vector<uint32_t> best = ChooseBestLayers(
+      layers, boundaries, input.anchors != nullptr ? *input.anchors : kNoAnchors, best_options);
+  times->best_layers_s = SecondsSince(start);
+  start = std::chrono::steady_clock::now();
+  Segmentation aggregated = AggregateRegions(layers, RetainRegions(layers, best));
+  times->aggregation_s = SecondsSince(start);
+  return aggregated;
+}
+
 }  // namespace
+
+SegmentationPriorResult RunSegmentationPrior(const LabelLayers& layers, const PriorPassInput& input,
+                                             const MspStereoOptions& options) {
+  assert(input.color != nullptr);
+  assert(layers.width == input.color->width && layers.height == input.color->height);
+  SegmentationPriorResult result;
+  if (options.edge_aggregation) {
+    result.aggregated = AggregateByAnchors(layers, input, options, &result.times);
+  } else {
+    const auto start = std::chrono::steady_clock::now();
+    result.aggregated = UnionOfLayers(layers);
+    result.times.aggregation_s = SecondsSince(start);
+  }
+  if (options.edge_refinement) {
+    const auto start = std::chrono::steady_clock::now();
+    CrfOptions crf;
+    crf.iterations = options.crf_iterations;
+    crf.alpha_relative = static_cast<float>(options.crf_alpha);
+    crf.beta = static_cast<float>(options.crf_beta);
+    crf.unary_confidence = static_cast<float>(options.crf_unary_confidence);
+    crf.num_threads = options.num_threads;
+    result.refined = RefineSegmentationCrf(result.aggregated, *input.color, input.depth,
+                                           input.depth_min, input.depth_max, crf);
+    result.edges = result.refined.edges;
+    result.times.refinement_s = SecondsSince(start);
+  } else {
+    result.edges = result.aggregated.edges;
+  }
+  return result;
+}
 
 std::vector<uint8_t> PackPriorEdges(const SegmentationPriorResult& result) {
   std::vector<uint8_t> packed(result.edges.size(), 0);
@@ -66,17 +121,7 @@ std::vector<uint8_t> PriorDriver::Run(const PriorPassInput& input) {
   const auto start = std::chrono::steady_clock::now();
   const LabelLayers& layers = Layers(input.view, *input.color);
   const double layer_seconds = SecondsSince(start);
-  SegmentationPriorInput prior;
-  prior.layers = &layers;
-  prior.color = input.color;
-  prior.depth = input.depth;
-  prior.depth_min = input.depth_min;
-  prior.depth_max = input.depth_max;
-  prior.anchors = input.anchors;
-  prior.inlier_distance = input.inlier_distance;
-  prior.image = static_cast<uint32_t>(input.view);
-  prior.pass = input.pass_id;
-  const SegmentationPriorResult result = RunSegmentationPrior(prior, options_);
+  const SegmentationPriorResult result = RunSegmentationPrior(layers, input, options_);
   std::vector<uint8_t> packed = PackPriorEdges(result);
   const double seconds = SecondsSince(start);
   total_seconds_ += seconds;

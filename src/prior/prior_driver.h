@@ -1,8 +1,11 @@
-// The segmentation prior as the CPU passes use it (algorithm.md 3.1-3.2):
-// per reference image and round, the label layers at the round's resolution
-// (the user's mask layers resampled, or the embedded segmenter on the colour
-// image), and per deformable pass the prior's edges packed into one byte per
-// pixel, the form PixelState keeps them in between passes.
+// The segmentation prior as the CPU passes use it (algorithm.md 3.1-3.2). Per
+// reference image and round, the label layers at the round's resolution (the
+// user's mask layers resampled, or the embedded segmenter on the colour
+// image); per deformable pass, edge aggregation of the layers by the anchors
+// of the unreliable pixels (eqs. 4-5) or, switched off, the union of their
+// boundaries, then CRF refinement (eq. 6) on colour and the current depth.
+// The edges, packed into one byte per pixel (the form PixelState keeps them
+// in between passes), confine the anchor search of the following passes.
 #pragma once
 
 #include <cstdint>
@@ -15,7 +18,7 @@
 #include "core/prior/best_layer.h"
 #include "options/stereo_options.h"
 #include "prior/label_layers.h"
-#include "prior/segmentation_prior_pipeline.h"
+#include "prior/segmentation_prior.h"
 
 namespace msp {
 
@@ -24,23 +27,50 @@ constexpr uint8_t kConfiningEdge = 1;   // confines anchors: refined edges, else
 constexpr uint8_t kAggregatedEdge = 2;  // B' of eq. 5, or the union of the layers (w/o Agr.)
 constexpr uint8_t kRefinedEdge = 4;     // edges of the CRF-refined labels (eq. 6)
 
+// Iterations of the eq. 4 RANSAC per layer subset (APD's anchor RANSAC: 50).
+constexpr int kBestLayerRansacIterations = 50;
+
+// What one reference image's prior needs in one pass.
+struct PriorPassInput {
+  int view = -1;                    // index into the views
+  const DenseMap* color = nullptr;  // RGB planes in [0, 1] at the round's resolution
+  const DenseMap* depth = nullptr;  // current depth; null = colour-only CRF
+  float depth_min = 0.0f;
+  float depth_max = 0.0f;
+  // Unreliable pixels with their anchors (up to kMaxPriorAnchors each) and
+  // the anchors' camera-frame points; null = none.
+  const std::vector<core::PriorAnchors>* anchors = nullptr;
+  // RANSAC inlier distance of eq. 4 in scene units (APD's anchor threshold).
+  float inlier_distance = 0.0f;
+  uint32_t pass_id = 0;  // random stream of eq. 4: (seed, view, pass_id)
+};
+
+struct SegmentationPriorTimes {
+  double boundaries_s = 0.0;
+  double best_layers_s = 0.0;
+  double aggregation_s = 0.0;
+  double refinement_s = 0.0;
+};
+
+struct SegmentationPriorResult {
+  Segmentation aggregated;     // edges = B' (or the union of the B_n)
+  Segmentation refined;        // empty unless edge_refinement
+  std::vector<uint8_t> edges;  // what confines anchors: refined, else aggregated
+  SegmentationPriorTimes times;
+};
+
+// The prior of one image in one pass on its label layers `layers` (at the
+// resolution of input.color), with the switches and CRF settings of
+// `options` (edge_aggregation, edge_refinement, crf_*, seed, num_threads);
+// the caller checks options.segmentation_prior.
+SegmentationPriorResult RunSegmentationPrior(const LabelLayers& layers, const PriorPassInput& input,
+                                             const MspStereoOptions& options);
+
 // One byte per pixel holding the three edge maps of `result`.
 std::vector<uint8_t> PackPriorEdges(const SegmentationPriorResult& result);
 
 // The 0/1 map of one bit of a packed edge map.
 std::vector<uint8_t> UnpackEdgeBit(const std::vector<uint8_t>& packed, uint8_t bit);
-
-// What one reference image's prior needs in one pass.
-struct PriorPassInput {
-  int view = -1;                    // index into the views
-  const DenseMap* color = nullptr;  // RGB at the round's resolution
-  const DenseMap* depth = nullptr;  // current depth; null = colour-only CRF
-  float depth_min = 0.0f;
-  float depth_max = 0.0f;
-  const std::vector<core::PriorAnchors>* anchors = nullptr;
-  float inlier_distance = 0.0f;  // eq. 4 RANSAC threshold (APD's anchor threshold)
-  uint32_t pass_id = 0;          // random stream of eq. 4
-};
 
 // Runs the prior for the passes; holds the current round's label layers.
 class PriorDriver {

@@ -1,0 +1,119 @@
+#include "patch_match/pass_schedule.h"
+
+#include <string>
+#include <vector>
+
+#include "patch_match/image_pyramid.h"
+
+namespace msp {
+namespace {
+
+// Pass `index` of round `round`; the rest of the schedule only through
+// `num_passes` (passes per round).
+Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, int round,
+              int num_rounds, int index, int num_passes) {
+  Pass pass;
+  pass.round = round;
+  pass.num_rounds = num_rounds;
+  pass.halvings = num_rounds - 1 - round;
+  pass.index = index;
+  pass.kind = index == 0 ? PassKind::kPhotometric : PassKind::kGeometric;
+  pass.id = static_cast<uint32_t>(round) * kPassesPerRoundStride + static_cast<uint32_t>(index);
+  const bool first = round == 0 && index == 0;
+  pass.start =
+      first ? PassStart::kRandom : (index == 0 ? PassStart::kUpsampled : PassStart::kPrevious);
+  // The first pass has no planes to classify: it runs the conventional sweeps.
+  const bool deformable = msp.deformable && !first;
+  pass.sweeps = deformable ? PassSweeps::kDeformable : PassSweeps::kCheckerboard;
+  // A round's first pass classifies with the thresholds after the coarser
+  // round's last pass; the others take the classes of the previous refine.
+  if (deformable && index == 0) pass.classify_after = num_passes - 1;
+  pass.refine_classifies = msp.deformable && index + 1 < num_passes;
+  const bool last_round = round == num_rounds - 1;
+  const bool final_pass = last_round && index == num_passes - 1;
+  // The prior's edges confine the passes after the one that made them, so
+  // none are made in the final pass.
+  pass.prior = SegmentationPriorEnabled(msp) && deformable && !final_pass;
+  if (final_pass) {
+    pass.output = PassOutput::kFinal;
+  } else if (last_round && pm.geom_consistency && index == 0) {
+    pass.output = PassOutput::kUnfiltered;
+  }
+  pass.preview = final_pass && SegmentationPriorEnabled(msp) && msp.write_previews;
+  return pass;
+}
+
+const char* KindName(PassKind kind) {
+  return kind == PassKind::kPhotometric ? "photometric" : "geometric";
+}
+
+const char* StartName(PassStart start) {
+  switch (start) {
+    case PassStart::kRandom:
+      return "random start";
+    case PassStart::kUpsampled:
+      return "upsampled state";
+    case PassStart::kPrevious:
+      break;
+  }
+  return "previous state";
+}
+
+std::string SweepsName(const Pass& pass) {
+  if (pass.sweeps == PassSweeps::kCheckerboard) return "checkerboard";
+  if (pass.classify_after < 0) return "deformable (classes from the refine)";
+  return "deformable (classified after pass " + std::to_string(pass.classify_after + 1) + ")";
+}
+
+const char* OutputName(PassOutput output) {
+  switch (output) {
+    case PassOutput::kNone:
+      return "";
+    case PassOutput::kUnfiltered:
+      return "; writes unfiltered maps";
+    case PassOutput::kFinal:
+      break;
+  }
+  return "; writes final maps";
+}
+
+}  // namespace
+
+bool SegmentationPriorEnabled(const MspStereoOptions& msp) {
+  return msp.deformable && msp.segmentation_prior;
+}
+
+std::vector<Pass> BuildPassSchedule(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp,
+                                    int max_width, int max_height) {
+  const int num_rounds = 1 + NumHalvings(max_width, max_height, msp.coarsest_image_size);
+  const int num_passes = 1 + (pm.geom_consistency ? kNumGeometricPasses : 0);
+  std::vector<Pass> schedule;
+  for (int round = 0; round < num_rounds; ++round) {
+    for (int index = 0; index < num_passes; ++index) {
+      schedule.push_back(MakePass(pm, msp, round, num_rounds, index, num_passes));
+    }
+  }
+  return schedule;
+}
+
+std::string ToString(const Pass& pass) {
+  std::string s = "round " + std::to_string(pass.round + 1) + "/" +
+                  std::to_string(pass.num_rounds) + " (scale 1/" +
+                  std::to_string(1 << pass.halvings) + "), pass " + std::to_string(pass.index + 1) +
+                  " " + KindName(pass.kind) + " (id " + std::to_string(pass.id) + "): ";
+  s += StartName(pass.start);
+  s += "; " + std::to_string(pass.iterations) + " x " + SweepsName(pass);
+  s += pass.refine_classifies ? "; refine + classify" : "; refine";
+  if (pass.prior) s += "; prior";
+  s += OutputName(pass.output);
+  if (pass.preview) s += "; previews";
+  return s;
+}
+
+std::string ToString(const std::vector<Pass>& schedule) {
+  std::string s;
+  for (const Pass& pass : schedule) s += ToString(pass) + "\n";
+  return s;
+}
+
+}  // namespace msp

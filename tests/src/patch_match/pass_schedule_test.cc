@@ -1,0 +1,141 @@
+#include "patch_match/pass_schedule.h"
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace msp {
+namespace {
+
+// The bundled scene at --PatchMatchStereo.max_image_size 320: one round.
+constexpr int kSceneWidth = 320;
+constexpr int kSceneHeight = 240;
+
+// The schedule's printout, also on stdout for the test log.
+std::string Printed(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp,
+                    int width = kSceneWidth, int height = kSceneHeight) {
+  const std::string printed = ToString(BuildPassSchedule(pm, msp, width, height));
+  std::cout << printed;
+  return printed;
+}
+
+TEST(PassSchedule, DefaultOptions) {
+  EXPECT_EQ(Printed(PatchMatchStereoOptions(), MspStereoOptions()),
+            "round 1/1 (scale 1/1), pass 1 photometric (id 0): random start; 3 x checkerboard; "
+            "refine + classify; writes unfiltered maps\n"
+            "round 1/1 (scale 1/1), pass 2 geometric (id 1): previous state; 3 x deformable "
+            "(classes from the refine); refine + classify; prior\n"
+            "round 1/1 (scale 1/1), pass 3 geometric (id 2): previous state; 3 x deformable "
+            "(classes from the refine); refine + classify; prior\n"
+            "round 1/1 (scale 1/1), pass 4 geometric (id 3): previous state; 3 x deformable "
+            "(classes from the refine); refine; writes final maps\n");
+}
+
+TEST(PassSchedule, WithoutGeometricConsistencyOnePassWritesTheFinalMaps) {
+  PatchMatchStereoOptions pm;
+  pm.geom_consistency = false;
+  EXPECT_EQ(Printed(pm, MspStereoOptions()),
+            "round 1/1 (scale 1/1), pass 1 photometric (id 0): random start; 3 x checkerboard; "
+            "refine; writes final maps\n");
+}
+
+TEST(PassSchedule, WithoutDeformablePatchesNeitherClassesNorPrior) {
+  MspStereoOptions msp;
+  msp.deformable = false;
+  msp.write_previews = true;  // previews need the prior, which needs deformable patches
+  EXPECT_EQ(Printed(PatchMatchStereoOptions(), msp),
+            "round 1/1 (scale 1/1), pass 1 photometric (id 0): random start; 3 x checkerboard; "
+            "refine; writes unfiltered maps\n"
+            "round 1/1 (scale 1/1), pass 2 geometric (id 1): previous state; 3 x checkerboard; "
+            "refine\n"
+            "round 1/1 (scale 1/1), pass 3 geometric (id 2): previous state; 3 x checkerboard; "
+            "refine\n"
+            "round 1/1 (scale 1/1), pass 4 geometric (id 3): previous state; 3 x checkerboard; "
+            "refine; writes final maps\n");
+}
+
+TEST(PassSchedule, SeveralRoundsOnlyTheLastWrites) {
+  // 3000 -> 1500 -> 750: two halvings until the larger side is <= 1000.
+  EXPECT_EQ(Printed(PatchMatchStereoOptions(), MspStereoOptions(), 3000, 2000),
+            std::string("round 1/3 (scale 1/4), pass 1 photometric (id 0): random start; 3 x "
+                        "checkerboard; refine + classify\n") +
+                "round 1/3 (scale 1/4), pass 2 geometric (id 1): previous state; 3 x deformable "
+                "(classes from the refine); refine + classify; prior\n"
+                "round 1/3 (scale 1/4), pass 3 geometric (id 2): previous state; 3 x deformable "
+                "(classes from the refine); refine + classify; prior\n"
+                "round 1/3 (scale 1/4), pass 4 geometric (id 3): previous state; 3 x deformable "
+                "(classes from the refine); refine; prior\n"
+                "round 2/3 (scale 1/2), pass 1 photometric (id 8): upsampled state; 3 x "
+                "deformable (classified after pass 4); refine + classify; prior\n"
+                "round 2/3 (scale 1/2), pass 2 geometric (id 9): previous state; 3 x deformable "
+                "(classes from the refine); refine + classify; prior\n"
+                "round 2/3 (scale 1/2), pass 3 geometric (id 10): previous state; 3 x deformable "
+                "(classes from the refine); refine + classify; prior\n"
+                "round 2/3 (scale 1/2), pass 4 geometric (id 11): previous state; 3 x deformable "
+                "(classes from the refine); refine; prior\n"
+                "round 3/3 (scale 1/1), pass 1 photometric (id 16): upsampled state; 3 x "
+                "deformable (classified after pass 4); refine + classify; prior; writes "
+                "unfiltered maps\n"
+                "round 3/3 (scale 1/1), pass 2 geometric (id 17): previous state; 3 x deformable "
+                "(classes from the refine); refine + classify; prior\n"
+                "round 3/3 (scale 1/1), pass 3 geometric (id 18): previous state; 3 x deformable "
+                "(classes from the refine); refine + classify; prior\n"
+                "round 3/3 (scale 1/1), pass 4 geometric (id 19): previous state; 3 x deformable "
+                "(classes from the refine); refine; writes final maps\n");
+}
+
+TEST(PassSchedule, SeveralRoundsWithoutGeometricConsistencyClassifyAtEachRoundStart) {
+  PatchMatchStereoOptions pm;
+  pm.geom_consistency = false;
+  MspStereoOptions msp;
+  msp.write_previews = true;
+  EXPECT_EQ(Printed(pm, msp, 1500, 1000),
+            "round 1/2 (scale 1/2), pass 1 photometric (id 0): random start; 3 x checkerboard; "
+            "refine\n"
+            "round 2/2 (scale 1/1), pass 1 photometric (id 8): upsampled state; 3 x deformable "
+            "(classified after pass 1); refine; writes final maps; previews\n");
+  msp.segmentation_prior = false;
+  EXPECT_EQ(Printed(pm, msp, 1500, 1000),
+            "round 1/2 (scale 1/2), pass 1 photometric (id 0): random start; 3 x checkerboard; "
+            "refine\n"
+            "round 2/2 (scale 1/1), pass 1 photometric (id 8): upsampled state; 3 x deformable "
+            "(classified after pass 1); refine; writes final maps\n");
+}
+
+// Invariants the runner relies on, over the option combinations.
+TEST(PassSchedule, ClassesAndIdsAreConsistent) {
+  for (const bool geom : {false, true}) {
+    for (const bool deformable : {false, true}) {
+      PatchMatchStereoOptions pm;
+      pm.geom_consistency = geom;
+      MspStereoOptions msp;
+      msp.deformable = deformable;
+      const std::vector<Pass> schedule = BuildPassSchedule(pm, msp, 4000, 3000);
+      ASSERT_EQ(schedule.size(), 3u * (geom ? 4 : 1));
+      std::set<uint32_t> ids;
+      int num_final = 0;
+      for (size_t i = 0; i < schedule.size(); ++i) {
+        const Pass& pass = schedule[i];
+        EXPECT_TRUE(ids.insert(pass.id).second);
+        num_final += pass.output == PassOutput::kFinal;
+        EXPECT_EQ(pass.halvings, pass.num_rounds - 1 - pass.round);
+        // A deformable pass takes the classes of the previous refine exactly
+        // when that refine made them.
+        const bool from_refine = i > 0 && schedule[i - 1].refine_classifies;
+        if (pass.sweeps == PassSweeps::kDeformable) {
+          EXPECT_EQ(pass.classify_after < 0, from_refine) << ToString(pass);
+        } else {
+          EXPECT_FALSE(from_refine) << ToString(pass);
+        }
+      }
+      EXPECT_EQ(num_final, 1);
+      EXPECT_EQ(schedule.back().output, PassOutput::kFinal);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace msp

@@ -21,4 +21,12 @@ grep -q '"num_missing_maps": 0' "$ws/eval.json"
 # Bad input gives one ERROR line and a non-zero exit.
 if "$bin_dir/msp_evaluate" --workspace "$ws/nonexistent" 2> "$ws/err.txt"; then exit 1; fi
 grep -q '^ERROR: ' "$ws/err.txt"
+# Every tool lists its options with their defaults, and stops on an unknown one.
+for tool in msp_make_scene msp_write_gt_maps msp_evaluate; do
+  "$bin_dir/$tool" --help > "$ws/help.txt"
+  grep -q -- '--help' "$ws/help.txt"
+  grep -q '(=' "$ws/help.txt"
+  if "$bin_dir/$tool" --no_such_option 1 2> "$ws/err.txt"; then exit 1; fi
+  grep -q "^ERROR: unknown option \`--no_such_option\`" "$ws/err.txt"
+done
 echo "cli smoke test passed"

@@ -7,54 +7,33 @@
 #include <stdexcept>
 #include <string>
 
+#include "options/tool_command_line.h"
 #include "tools/evaluate_report.h"
 #include "tools/evaluate_workspace.h"
-
-namespace {
-
-void PrintUsage() {
-  std::printf(
-      "Usage: msp_evaluate --workspace <ws> [--ground_truth <ws>/ground_truth]\n"
-      "                    [--input_type geometric|photometric] [--fused <ws>/fused.ply]\n"
-      "                    [--no_maps] [--json out.json]\n");
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   msp::eval::EvaluationOptions options;
   std::string json_path;
+  msp::ToolCommandLine command_line(
+      "Usage: msp_evaluate --workspace <ws> [options]",
+      "Evaluates the depth maps of <ws>/stereo and a fused point cloud against the\n"
+      "ground truth of msp_make_scene: per-map figures, and the cloud's accuracy,\n"
+      "completeness and F1.");
+  command_line.AddRequired("workspace", &options.workspace,
+                           "Workspace written by msp_make_scene, with the method's maps.");
+  command_line.Add("ground_truth", &options.ground_truth, "Ground truth folder.",
+                   "<workspace>/ground_truth");
+  command_line.AddChoice("input_type", &options.input_type, {"geometric", "photometric"},
+                         "Which maps to evaluate (<image>.<input_type>.bin).");
+  command_line.Add("fused", &options.fused, "Fused point cloud (.ply) to evaluate; \"\" = none.");
+  command_line.AddFlag("no_maps", &options.evaluate_maps, /*value_when_given=*/false,
+                       "Skip the depth maps; evaluate the fused cloud only.");
+  command_line.Add("json", &json_path, "Also write the figures to this JSON file; \"\" = none.");
   try {
-    for (int i = 1; i < argc; ++i) {
-      const std::string arg = argv[i];
-      if (arg == "-h" || arg == "--help") {
-        PrintUsage();
-        return 0;
-      }
-      if (arg == "--no_maps") {
-        options.evaluate_maps = false;
-        continue;
-      }
-      if (i + 1 >= argc) throw std::runtime_error("missing value for " + arg);
-      const std::string value = argv[++i];
-      if (arg == "--workspace") {
-        options.workspace = value;
-      } else if (arg == "--ground_truth") {
-        options.ground_truth = value;
-      } else if (arg == "--input_type") {
-        if (value != "geometric" && value != "photometric") {
-          throw std::runtime_error("--input_type must be geometric or photometric, not " + value);
-        }
-        options.input_type = value;
-      } else if (arg == "--fused") {
-        options.fused = value;
-      } else if (arg == "--json") {
-        json_path = value;
-      } else {
-        throw std::runtime_error("unknown option " + arg);
-      }
+    if (command_line.Parse(argc, argv) == msp::ParseStatus::kHelp) {
+      std::cout << command_line.Usage();
+      return 0;
     }
-    if (options.workspace.empty()) throw std::runtime_error("--workspace is required");
     const msp::eval::EvaluationResult result = msp::eval::EvaluateWorkspace(options);
     msp::eval::PrintReport(result, std::cout);
     if (!json_path.empty()) {

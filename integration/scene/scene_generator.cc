@@ -2,48 +2,30 @@
 // with exact ground truth (see integration/scene/scene.h for the scene).
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <exception>
-#include <stdexcept>
-#include <string>
+#include <iostream>
 
 #include "integration/scene/generate.h"
-
-namespace {
-
-void PrintUsage() {
-  std::printf(
-      "Usage: msp_make_scene --output <dir> [--seed N] [--width 640] [--height 480]\n"
-      "                      [--num_cameras 10]\n"
-      "Writes images/, sparse/, stereo/*.cfg, run-colmap-*.sh and ground_truth/.\n");
-}
-
-}  // namespace
+#include "options/tool_command_line.h"
 
 int main(int argc, char** argv) {
   msp::scene::GeneratorOptions options;
+  msp::ToolCommandLine command_line(
+      "Usage: msp_make_scene --output <dir> [options]",
+      "Renders the bundled scene as a COLMAP dense workspace: images/, sparse/,\n"
+      "stereo/*.cfg, run-colmap-*.sh and the exact ground truth in ground_truth/.");
+  command_line.AddRequired("output", &options.output, "Workspace folder to write (created).");
+  command_line.Add(
+      "seed", &options.seed,
+      "Seed of the scene's random draws (camera jitter, rendering, sparse tracks); the "
+      "scene is a pure function of it.");
+  command_line.Add("width", &options.rig.width, "Image width in pixels.");
+  command_line.Add("height", &options.rig.height, "Image height in pixels.");
+  command_line.Add("num_cameras", &options.rig.num_cameras, "Number of views on the camera arc.");
   try {
-    for (int i = 1; i < argc; ++i) {
-      const std::string arg = argv[i];
-      if (arg == "-h" || arg == "--help") {
-        PrintUsage();
-        return 0;
-      }
-      if (i + 1 >= argc) throw std::runtime_error("missing value for " + arg);
-      const std::string value = argv[++i];
-      if (arg == "--output") {
-        options.output = value;
-      } else if (arg == "--seed") {
-        options.seed = std::stoull(value);
-      } else if (arg == "--width") {
-        options.rig.width = std::stoi(value);
-      } else if (arg == "--height") {
-        options.rig.height = std::stoi(value);
-      } else if (arg == "--num_cameras") {
-        options.rig.num_cameras = std::stoi(value);
-      } else {
-        throw std::runtime_error("unknown option " + arg);
-      }
+    if (command_line.Parse(argc, argv) == msp::ParseStatus::kHelp) {
+      std::cout << command_line.Usage();
+      return 0;
     }
     const auto start = std::chrono::steady_clock::now();
     const msp::scene::GeneratorSummary s = msp::scene::GenerateScene(options);
@@ -56,7 +38,6 @@ int main(int argc, char** argv) {
         s.num_surface_samples, s.extent, seconds);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ERROR: %s\n", e.what());
-    PrintUsage();
     return 1;
   }
   return 0;

@@ -101,8 +101,8 @@ void BenchGeometricTerm(const core::PassParams& p, int width, int height) {
 // Eight planes per window and view, as propagation scores its candidates:
 // one WindowNccCost per plane against WindowNccCosts with the planes in the
 // lanes of one vector. The planes are a little apart in depth, so the lanes'
-// samples land close together in the source; in a real sweep candidates
-// spread further, and the gain there is smaller (BENCHMARKS.md).
+// samples land close together in the source: the favourable case, since a
+// real sweep's candidates spread further.
 void BenchCandidateBatch(const core::PassParams& p, int width, int height) {
   const int r0 = p.ncc.window_radius;
   double seconds[2] = {0.0, 0.0};

@@ -13,9 +13,8 @@
 # the same machine: a drift then slows both alike and leaves the ratio. When
 # the first of the two ends, a filler run takes its core until the other ends,
 # so that neither finishes alone on a quieter machine (which would flatter it).
-# The default run has proved the more sensitive to what runs beside it (its
-# time spread 20 % over six such pairs, the conventional run's 4 %), so pairs
-# one after the other are the fairer measure of what a user sees.
+# The default run is the more sensitive to what runs beside it, so pairs one
+# after the other are the fairer measure of what a user sees.
 #
 # <workspace> is a dense workspace such as msp_make_scene writes; it is not
 # modified (its stereo/depth_maps and normal_maps are left out of the copies).

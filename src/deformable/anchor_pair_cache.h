@@ -2,9 +2,8 @@
 // Candidate k of a deformable update is anchor k's plane continued to the
 // pixel (core/deformable/deformable_update.h), so the cost of anchor window a under it
 // in a source view depends on the two anchors alone, not on the pixel. The
-// pixels of a textureless region share most of their anchors: over an
-// iteration of the bundled scene about a fifth of the (candidate, window)
-// pairs are distinct. Each pair is warped with the plane as anchor k's own
+// pixels of a textureless region share most of their anchors, so most
+// (candidate, window) pairs recur from pixel to pixel. Each pair is warped with the plane as anchor k's own
 // pixel sees it, so its cost is the same whichever pixel asks first, whatever
 // the cache holds and whatever the thread count.
 #pragma once
@@ -23,8 +22,8 @@ namespace msp {
 
 // A direct-mapped cache of pair costs in every source view: a pair's slot is
 // a hash of its two pixels, and a new pair evicts the one that held it. A
-// row of a sweep revisits the anchors of the rows before, so 4 MiB per cache
-// keep about two pairs in three that the next pixels ask for (bundled scene).
+// row of a sweep revisits the anchors of the rows before, so a cache of a few
+// MiB serves most of the pairs the next pixels ask for.
 class AnchorPairCache {
  public:
   explicit AnchorPairCache(int num_views);
@@ -52,7 +51,7 @@ class AnchorPairCache {
   size_t slot_words_;  // 64-bit words per slot
   // Mapped, not allocated: a block of megabytes from malloc raises glibc's
   // mmap threshold, after which the passes' smaller buffers fragment the
-  // heap (peak memory +18 MiB at 320x240, measured).
+  // heap and raise the peak memory.
   struct Unmap {
     size_t bytes;
     void operator()(uint64_t* p) const;

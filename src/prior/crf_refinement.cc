@@ -158,8 +158,8 @@ struct CrfImage {
 };
 
 // exp(-x) for x in [0, kMaxKernelExponent], relative error < 4e-4: the
-// kernel is evaluated for every pair in every iteration and the libm call
-// was 40 % of the CRF time; mean-field needs no more precision than this.
+// kernel is evaluated for every pair in every iteration, where a libm call
+// is costly, and mean-field needs no more precision than this.
 float ExpNeg(float x) {
   constexpr float kLog2e = 1.44269504f;
   const float y = -x * kLog2e;  // exp(-x) = 2^y, y <= 0

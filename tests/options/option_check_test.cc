@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/error_message.h"
+
 namespace msp {
 namespace {
 
@@ -18,12 +20,7 @@ StereoCommandOptions Valid() {
 
 // The message of the OptionError thrown by Check, or "" if none.
 std::string CheckError(const StereoCommandOptions& options) {
-  try {
-    CheckStereoCommandOptions(options);
-  } catch (const OptionError& e) {
-    return e.what();
-  }
-  return "";
+  return test::ErrorMessage<OptionError>([&] { CheckStereoCommandOptions(options); });
 }
 
 struct BadCase {

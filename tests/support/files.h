@@ -10,10 +10,15 @@
 namespace msp {
 namespace test {
 
-// Writes `bytes` to `path`, creating its parent folders.
-inline void WriteRaw(const std::string& path, const std::string& bytes) {
+// Creates the folders `path` is to be written in.
+inline void CreateParentFolders(const std::string& path) {
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
+}
+
+// Writes `bytes` to `path`, creating its parent folders.
+inline void WriteRaw(const std::string& path, const std::string& bytes) {
+  CreateParentFolders(path);
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
   file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }

@@ -3,18 +3,18 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
+
+#include "tests/support/files.h"
 
 namespace msp {
 namespace test {
 
 // Writes `image` to `path` (format from the extension), creating its parent folders.
 inline void WriteImage(const std::string& path, const cv::Mat& image) {
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
+  CreateParentFolders(path);
   ASSERT_TRUE(cv::imwrite(path, image)) << path;
 }
 

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "tests/core/plane_scene.h"
+#include "tests/support/plane_scene.h"
 
 namespace msp {
 namespace core {
@@ -43,8 +43,8 @@ DeformableParams SameWindow(const PassParams& p) {
 }
 
 TEST(DeformableCost, AnchorsAtTheCentreGiveTheConventionalCost) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   const int zero[kMaxAnchors][2] = {};
   const AnchorSet a = AnchorsAt(zero, kMaxAnchors, kCol, kRow);
   for (float depth : {4.0f, 4.1f, 3.5f}) {  // a good and two wrong hypotheses
@@ -55,8 +55,8 @@ TEST(DeformableCost, AnchorsAtTheCentreGiveTheConventionalCost) {
 }
 
 TEST(DeformableCost, NoAnchorsIsExactlyTheConventionalCost) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   AnchorSet none{};
   const PlaneHypothesis h{4.2f, kFrontoParallel};
   EXPECT_EQ(DeformableViewCost(s.params, 0, kCol, kRow, h, none, DefaultDeformableParams()),
@@ -64,8 +64,8 @@ TEST(DeformableCost, NoAnchorsIsExactlyTheConventionalCost) {
 }
 
 TEST(DeformableCost, GeometricTermAsInTheConventionalCost) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   // A source depth map without depth: the geometric term is its maximum.
   const std::vector<float> empty(s.src.width * s.src.height, 0.0f);
   s.params.src[0].depth = ImageView{empty.data(), s.src.width, s.src.height, s.src.width};
@@ -82,8 +82,8 @@ TEST(DeformableCost, GeometricTermAsInTheConventionalCost) {
 }
 
 TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   const AnchorSet a = RingOfAnchors();
   const DeformableParams d = DefaultDeformableParams();
   const PlaneHypothesis truth{4.0f, kFrontoParallel};
@@ -109,8 +109,8 @@ TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
 // limit is above it, otherwise a figure between the limit and the exact
 // cost; two views so that a sum can stop half way.
 TEST(DeformableCost, BoundedAggregateStopsOnlyAtItsLimit) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   s.params.src[1] = s.params.src[0];
   s.params.num_src = 2;
   const DeformableParams d = DefaultDeformableParams();
@@ -147,8 +147,8 @@ TEST(DeformableCost, BoundedAggregateStopsOnlyAtItsLimit) {
 // by row, what DeformableViewCosts gives each alone; a row without a
 // candidate costs kMaxCost.
 TEST(DeformableCost, CandidateRowsCostWhatEachCandidateCostsAlone) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   const AnchorSet a = RingOfAnchors();
   const DeformableParams d = DefaultDeformableParams();
   DeformableWindows windows;
@@ -183,12 +183,12 @@ TEST(DeformableCost, CandidateRowsCostWhatEachCandidateCostsAlone) {
 TEST(DeformableCost, TexturedAnchorsRescueATexturelessCentre) {
   // The reference is flat inside a disk of radius 12 around p: the centre
   // window alone has no signal (cost 2), the anchors outside still match.
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   for (int r = kRow - 12; r <= kRow + 12; ++r) {
     for (int c = kCol - 12; c <= kCol + 12; ++c) {
       if ((c - kCol) * (c - kCol) + (r - kRow) * (r - kRow) <= 144) {
-        s.ref_image[r * s.ref.width + c] = 0.5f;
+        s.ref_image.At(c, r) = 0.5f;
       }
     }
   }
@@ -203,8 +203,8 @@ TEST(DeformableCost, TexturedAnchorsRescueATexturelessCentre) {
 }
 
 TEST(DeformableCost, AViewThatDoesNotSeeThePixelCostsTheMaximum) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   const PlaneHypothesis truth{4.0f, kFrontoParallel};
   const Mat3 H = WarpHomography(s.params.src[0].rel, PreparePlane(s.params, 0, 0, truth).warp);
   const ImageView& src = s.params.src[0].image;

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "prior/label_layers.h"
-#include "tests/src/synthetic_views.h"
+#include "tests/support/synthetic_views.h"
 #include "tests/support/temp_dir.h"
 
 namespace msp {
@@ -63,8 +63,7 @@ std::vector<Problem> AllProblems(int num_views) {
 }
 
 TEST(PatchMatchCpu, RecoversFrontoParallelPlane) {
-  const std::vector<View> views =
-      testing_support::RenderFrontoParallelPlane(96, 72, 4, kPlaneDepth, 0.25f);
+  const std::vector<View> views = test::RenderFrontoParallelPlane(96, 72, 4, kPlaneDepth, 0.25f);
   const std::vector<Problem> problems = AllProblems(4);
   PatchMatchStereoOptions pm;
   MspStereoOptions msp;
@@ -100,8 +99,7 @@ TEST(PatchMatchCpu, RecoversFrontoParallelPlane) {
 // With the segmentation prior on (the default) and off: the same seed gives
 // the same maps, and the prior the same edges, on 1 and 2 threads.
 TEST(PatchMatchCpu, DeterministicAcrossThreadCountsWithAndWithoutPrior) {
-  const std::vector<View> views =
-      testing_support::RenderFrontoParallelPlane(48, 40, 3, kPlaneDepth, 0.25f);
+  const std::vector<View> views = test::RenderFrontoParallelPlane(48, 40, 3, kPlaneDepth, 0.25f);
   const std::vector<Problem> problems = AllProblems(3);
   PatchMatchStereoOptions pm;
   const test::TempDir scratch;
@@ -137,8 +135,7 @@ TEST(PatchMatchCpu, DeterministicAcrossThreadCountsWithAndWithoutPrior) {
 // Views without layers get the segmenter's edges. Previews show both.
 TEST(PatchMatchCpu, UserMaskLayersAreUsedOverTheEmbeddedSegmenter) {
   constexpr int kWidth = 48, kHeight = 40, kSplit = 20;
-  std::vector<View> views =
-      testing_support::RenderFrontoParallelPlane(kWidth, kHeight, 3, kPlaneDepth, 0.25f);
+  std::vector<View> views = test::RenderFrontoParallelPlane(kWidth, kHeight, 3, kPlaneDepth, 0.25f);
   LabelLayers layers;
   layers.width = kWidth;
   layers.height = kHeight;
@@ -175,8 +172,7 @@ TEST(PatchMatchCpu, UserMaskLayersAreUsedOverTheEmbeddedSegmenter) {
 // A cache budget smaller than one image's state spills every other state to
 // the scratch folder between passes; the maps must not change.
 TEST(PatchMatchCpu, SpillingStateGivesIdenticalMaps) {
-  const std::vector<View> views =
-      testing_support::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
+  const std::vector<View> views = test::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
   const std::vector<Problem> problems = AllProblems(3);
   PatchMatchStereoOptions pm;
   MspStereoOptions msp;
@@ -189,8 +185,7 @@ TEST(PatchMatchCpu, SpillingStateGivesIdenticalMaps) {
 }
 
 TEST(PatchMatchCpu, SkipsImagesWithFinalOutputs) {
-  const std::vector<View> views =
-      testing_support::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
+  const std::vector<View> views = test::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
   PatchMatchStereoOptions pm;
   pm.geom_consistency = false;
   MspStereoOptions msp;

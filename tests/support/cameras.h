@@ -61,6 +61,12 @@ inline core::Camera SourceCamera() {
                                 core::Vec3{0.4f, 0.05f, 0.02f});
 }
 
+// SourceCamera mirrored about the reference: 0.4 to its left, turned towards it.
+inline core::Camera MirroredSourceCamera() {
+  return SkewedIntrinsicsCamera(200, 150, 170.0f, RotationY(0.12f),
+                                core::Vec3{-0.4f, -0.05f, 0.02f});
+}
+
 // The world point where the ray of pixel (col, row) of `cam` meets the
 // world plane z = depth.
 inline core::Vec3 PointOnPlaneZ(const core::Camera& cam, float col, float row, float depth) {

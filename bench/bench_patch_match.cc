@@ -17,7 +17,7 @@
 #include "core/patch_match/patch_match_kernel.h"
 #include "patch_match/pixel_state.h"
 #include "patch_match/sweeps.h"
-#include "tests/src/synthetic_views.h"
+#include "tests/support/synthetic_views.h"
 
 namespace msp {
 namespace {
@@ -190,7 +190,7 @@ void BenchDeformableCost(const core::PassParams& p, int width, int height) {
 
 void Run(int width, int height, int num_views, bool ncc_only) {
   const std::vector<View> views =
-      testing_support::RenderFrontoParallelPlane(width, height, num_views, 2.0f, 0.3f);
+      test::RenderFrontoParallelPlane(width, height, num_views, 2.0f, 0.3f);
   PixelState state(width, height);
   const core::PassParams p = MakeParams(views, &state);
 

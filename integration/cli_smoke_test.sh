@@ -6,7 +6,7 @@ set -eu
 bin_dir=$1
 colmap=$2
 [ -x "$colmap" ] || { echo "colmap is not installed at $colmap" >&2; exit 1; }
-ws=$(mktemp -d "${TMPDIR:-/tmp}/msp_cli_smoke.XXXXXX")
+ws=$(mktemp -d)
 trap 'rm -rf "$ws"' EXIT
 
 "$bin_dir/msp_make_scene" --output "$ws" --seed 3 --width 320 --height 240 --num_cameras 6

@@ -9,14 +9,15 @@
 //   depth x 1.05: per-map within-1 % 0 %; F1 (>= 3 views) 1.1 % (0.5 %),
 //                 41.5 % (2 %); accuracy 1.4 % / 34 %.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "integration/scene/generate.h"
 #include "integration/scene/gt_maps.h"
+#include "tests/support/temp_dir.h"
 #include "tools/evaluate_workspace.h"
 
 namespace msp {
@@ -59,11 +60,10 @@ eval::EvaluationResult Evaluate(const std::string& ws, const std::string& fused)
 
 class ContractTest : public testing::Test {
  protected:
-  static void TearDownTestSuite() { fs::remove_all(workspace_); }
+  static void TearDownTestSuite() { scratch_.reset(); }
   static void SetUpTestSuite() {
-    // One directory per process, so that two test runs on one machine do not collide.
-    workspace_ = testing::TempDir() + "/msp_contract_ws_" + std::to_string(getpid());
-    fs::remove_all(workspace_);
+    scratch_ = std::make_unique<test::TempDir>();
+    workspace_ = *scratch_ / "ws";
     scene::GeneratorOptions options;
     options.output = workspace_;
     options.seed = 1;
@@ -73,8 +73,10 @@ class ContractTest : public testing::Test {
     ASSERT_TRUE(fs::exists(ColmapExecutable()))
         << "colmap is not installed at " << ColmapExecutable();
   }
+  static std::unique_ptr<test::TempDir> scratch_;
   static std::string workspace_;
 };
+std::unique_ptr<test::TempDir> ContractTest::scratch_;
 std::string ContractTest::workspace_;
 
 TEST_F(ContractTest, ExactMapsFuseOntoTheSurface) {

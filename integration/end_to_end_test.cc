@@ -9,17 +9,17 @@
 // 61.9 %, fused accuracy at 2 % of the extent 91.1 %, F1 over >= 3-view surface
 // 61.4 %. (Conventional core, --MspStereo.deformable false: 60.9 %, 96.9 %, 48.6 %.)
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <memory>
 #include <string>
 
 #include "colmap_ext/dense_map_io.h"
 #include "integration/scene/generate.h"
+#include "tests/support/files.h"
+#include "tests/support/temp_dir.h"
 #include "tools/evaluate_workspace.h"
 
 namespace msp {
@@ -43,18 +43,12 @@ int RunLogged(const std::string& command, const std::string& log) {
   return std::system(full.c_str());
 }
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 class EndToEndTest : public testing::Test {
  protected:
-  static void TearDownTestSuite() { fs::remove_all(ws_); }
+  static void TearDownTestSuite() { scratch_.reset(); }
   static void SetUpTestSuite() {
-    // One directory per process, so that two test runs on one machine do not collide.
-    ws_ = testing::TempDir() + "/msp_end_to_end_ws_" + std::to_string(getpid());
-    fs::remove_all(ws_);
+    scratch_ = std::make_unique<test::TempDir>();
+    ws_ = *scratch_ / "ws";
     scene::GeneratorOptions options;
     options.output = ws_;
     options.seed = 1;
@@ -63,8 +57,10 @@ class EndToEndTest : public testing::Test {
     options.rig.num_cameras = kNumViews;
     scene::GenerateScene(options);
   }
+  static std::unique_ptr<test::TempDir> scratch_;
   static std::string ws_;
 };
+std::unique_ptr<test::TempDir> EndToEndTest::scratch_;
 std::string EndToEndTest::ws_;
 
 const std::string kColmap = std::string(MSP_BIN_DIR) + "/colmap";
@@ -74,7 +70,7 @@ TEST_F(EndToEndTest, StereoFusionEvaluateThenResume) {
   ASSERT_EQ(RunLogged(kColmap + " msp_stereo --workspace_path " + ws_ + " --MspStereo.seed 1",
                       ws_ + "/stereo.log"),
             0)
-      << ReadFile(ws_ + "/stereo.log");
+      << test::ReadRaw(ws_ + "/stereo.log");
   for (int i = 0; i < kNumViews; ++i) {
     char name[32];
     std::snprintf(name, sizeof(name), "img_%03d.png", i);
@@ -93,7 +89,7 @@ TEST_F(EndToEndTest, StereoFusionEvaluateThenResume) {
                           " --input_type geometric --output_path " + fused,
                       ws_ + "/fusion.log"),
             0)
-      << ReadFile(ws_ + "/fusion.log");
+      << test::ReadRaw(ws_ + "/fusion.log");
 
   eval::EvaluationOptions options;
   options.workspace = ws_;
@@ -109,11 +105,11 @@ TEST_F(EndToEndTest, StereoFusionEvaluateThenResume) {
   EXPECT_GE(coarse.f1_multi, kMinF1MultiCoarse);
 
   // Resume: a second run finds every output and leaves the files as they are.
-  const std::string before = ReadFile(ws_ + "/stereo/depth_maps/img_000.png.geometric.bin");
+  const std::string before = test::ReadRaw(ws_ + "/stereo/depth_maps/img_000.png.geometric.bin");
   ASSERT_EQ(RunLogged(kColmap + " msp_stereo --workspace_path " + ws_, ws_ + "/stereo2.log"), 0);
-  EXPECT_NE(ReadFile(ws_ + "/stereo2.log").find("nothing to do"), std::string::npos)
-      << ReadFile(ws_ + "/stereo2.log");
-  EXPECT_EQ(ReadFile(ws_ + "/stereo/depth_maps/img_000.png.geometric.bin"), before);
+  EXPECT_NE(test::ReadRaw(ws_ + "/stereo2.log").find("nothing to do"), std::string::npos)
+      << test::ReadRaw(ws_ + "/stereo2.log");
+  EXPECT_EQ(test::ReadRaw(ws_ + "/stereo/depth_maps/img_000.png.geometric.bin"), before);
 }
 
 }  // namespace

@@ -9,7 +9,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "tests/colmap_ext/test_util.h"
+#include "tests/support/error_message.h"
+#include "tests/support/files.h"
+#include "tests/support/temp_dir.h"
 
 namespace msp {
 namespace {

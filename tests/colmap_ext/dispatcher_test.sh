@@ -10,21 +10,7 @@ unset REAL_COLMAP MSP_STEREO MSP_REPLACE_PATCH_MATCH COLMAP_EXE_PATH
 # Every call is bounded so a dispatch loop fails the test instead of hanging.
 readonly LIMIT=10
 
-TMP=$(mktemp -d) || exit 1
-trap 'rm -rf "$TMP"' EXIT
-failures=0
-
-pass() { echo "ok   $1"; }
-fail() { echo "FAIL $1"; failures=$((failures + 1)); }
-# expect_eq NAME ACTUAL EXPECTED
-expect_eq() {
-  if [ "$2" = "$3" ]; then pass "$1"; else
-    fail "$1"; printf '  expected: [%s]\n  actual:   [%s]\n' "$3" "$2"; fi
-}
-# expect_contains NAME TEXT NEEDLE
-expect_contains() {
-  case "$2" in *"$3"*) pass "$1" ;; *) fail "$1"; printf '  [%s] not in:\n%s\n' "$3" "$2" ;; esac
-}
+. "$(dirname "$0")/../support/checks.sh"
 
 mkdir -p "$TMP/real" "$TMP/exe" "$TMP/copy" "$TMP/link" "$TMP/bare"
 NL='
@@ -150,8 +136,4 @@ rc=$?
 [ "$rc" -ne 0 ] && [ "$rc" -ne 124 ] && pass "REAL_COLMAP pointing to the dispatcher fails fast" ||
   fail "REAL_COLMAP pointing to the dispatcher fails fast"
 
-if [ "$failures" -ne 0 ]; then
-  echo "$failures check(s) failed"
-  exit 1
-fi
-echo "all checks passed"
+finish

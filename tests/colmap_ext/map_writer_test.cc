@@ -1,7 +1,6 @@
 #include "colmap_ext/map_writer.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <stdexcept>
@@ -10,6 +9,7 @@
 #include "colmap_ext/dense_map_io.h"
 #include "colmap_ext/prior_previews.h"
 #include "colmap_ext/workspace.h"
+#include "tests/support/temp_dir.h"
 
 namespace msp {
 namespace {
@@ -18,14 +18,6 @@ namespace fs = std::filesystem;
 
 class MapWriterTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    workspace_ = fs::path(::testing::TempDir()) /
-                 ("msp_map_writer_test_" + std::to_string(::getpid()) + "_" +
-                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(workspace_);
-  }
-  void TearDown() override { fs::remove_all(workspace_); }
-
   static DenseMap Depth(float value) { return DenseMap(4, 3, 1, value); }
   static DenseMap Normal() {
     DenseMap normal(4, 3, 3);
@@ -35,7 +27,8 @@ class MapWriterTest : public ::testing::Test {
     return normal;
   }
 
-  fs::path workspace_;
+  const test::TempDir scratch_;
+  const fs::path workspace_ = scratch_.path();
 };
 
 TEST_F(MapWriterTest, WritesColmapPathsIncludingSubfolders) {

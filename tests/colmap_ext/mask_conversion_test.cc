@@ -3,17 +3,20 @@
 #include <gtest/gtest.h>
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
 #include "colmap_ext/mask_layers.h"
-#include "tests/colmap_ext/test_util.h"
+#include "tests/support/error_message.h"
+#include "tests/support/files.h"
+#include "tests/support/image_files.h"
+#include "tests/support/temp_dir.h"
 
 namespace msp {
 namespace {
 
 using test::InputErrorMessage;
 using test::TempDir;
+using test::WriteImage;
 
 constexpr int kWidth = 10;
 constexpr int kHeight = 8;
@@ -25,17 +28,12 @@ cv::Mat Rect(int col0, int row0, int col1, int row1, int width = kWidth, int hei
   return mask;
 }
 
-void Write(const std::string& path, const cv::Mat& mat) {
-  test::WriteRaw(path, "");
-  ASSERT_TRUE(cv::imwrite(path, mat));
-}
-
 TEST(MaskConversion, SmallerMasksArePaintedOverLargerOnes) {
   TempDir dir;
   const std::string level = dir / "a.jpg/0";
-  Write(level + "/0.png", Rect(4, 2, 6, 4));   // small, inside the big one
-  Write(level + "/1.png", Rect(0, 0, 8, 8));   // big
-  Write(level + "/2.png", Rect(8, 0, 10, 3));  // medium, elsewhere
+  WriteImage(level + "/0.png", Rect(4, 2, 6, 4));   // small, inside the big one
+  WriteImage(level + "/1.png", Rect(0, 0, 8, 8));   // big
+  WriteImage(level + "/2.png", Rect(8, 0, 10, 3));  // medium, elsewhere
   const PaintedLevel painted = PaintMaskFolder(level);
   ASSERT_EQ(painted.width, kWidth);
   ASSERT_EQ(painted.height, kHeight);
@@ -49,8 +47,8 @@ TEST(MaskConversion, SmallerMasksArePaintedOverLargerOnes) {
 TEST(MaskConversion, MetadataAreasDecideTheOrder) {
   TempDir dir;
   const std::string level = dir / "a.jpg/0";
-  Write(level + "/0.png", Rect(0, 0, 6, 6));
-  Write(level + "/1.png", Rect(3, 3, 9, 8));
+  WriteImage(level + "/0.png", Rect(0, 0, 6, 6));
+  WriteImage(level + "/1.png", Rect(3, 3, 9, 8));
   // The metadata claims mask 1 is larger: it is painted first, 0 over it.
   test::WriteRaw(level + "/metadata.csv",
                  "id,area,bbox_x0,bbox_y0,bbox_w,bbox_h,predicted_iou\n0,36,0,0,6,6,0.9\n"
@@ -63,10 +61,10 @@ TEST(MaskConversion, MetadataAreasDecideTheOrder) {
 TEST(MaskConversion, ConvertsATreeIntoLayersTheReaderAccepts) {
   TempDir in, out;
   for (const std::string name : {"a.jpg", "sub/b.png"}) {
-    Write(in / (name + "/0/0.png"), Rect(0, 0, 10, 8));
-    Write(in / (name + "/1/0.png"), Rect(0, 0, 5, 8));
-    Write(in / (name + "/1/1.png"), Rect(5, 0, 10, 8));
-    Write(in / (name + "/2/7.png"), Rect(2, 2, 4, 4));
+    WriteImage(in / (name + "/0/0.png"), Rect(0, 0, 10, 8));
+    WriteImage(in / (name + "/1/0.png"), Rect(0, 0, 5, 8));
+    WriteImage(in / (name + "/1/1.png"), Rect(5, 0, 10, 8));
+    WriteImage(in / (name + "/2/7.png"), Rect(2, 2, 4, 4));
   }
   EXPECT_EQ(FindMaskImages(in.path()), (std::vector<std::string>{"a.jpg", "sub/b.png"}));
   std::ostringstream log;
@@ -83,20 +81,20 @@ TEST(MaskConversion, ConvertsATreeIntoLayersTheReaderAccepts) {
 TEST(MaskConversion, BadInputsNameTheFile) {
   TempDir dir;
   const std::string level = dir / "a.jpg/0";
-  Write(level + "/0.png", Rect(0, 0, 4, 4));
-  Write(level + "/1.png", Rect(0, 0, 4, 4, kWidth + 2, kHeight));
+  WriteImage(level + "/0.png", Rect(0, 0, 4, 4));
+  WriteImage(level + "/1.png", Rect(0, 0, 4, 4, kWidth + 2, kHeight));
   std::string message = InputErrorMessage([&] { PaintMaskFolder(level); });
   EXPECT_NE(message.find(level + "/1.png: mask is 12x8"), std::string::npos) << message;
 
   const std::string colour_level = dir / "c.jpg/0";
   cv::Mat colour(kHeight, kWidth, CV_8UC3, cv::Scalar(255, 255, 255));
-  Write(colour_level + "/0.png", colour);
+  WriteImage(colour_level + "/0.png", colour);
   message = InputErrorMessage([&] { PaintMaskFolder(colour_level); });
   EXPECT_NE(message.find(colour_level + "/0.png: mask has 3 channels"), std::string::npos)
       << message;
 
   const std::string meta_level = dir / "m.jpg/0";
-  Write(meta_level + "/0.png", Rect(0, 0, 4, 4));
+  WriteImage(meta_level + "/0.png", Rect(0, 0, 4, 4));
   test::WriteRaw(meta_level + "/metadata.csv", "id,area\n0,16\n5,20\n");
   message = InputErrorMessage([&] { PaintMaskFolder(meta_level); });
   EXPECT_NE(message.find("lists mask id 5 but " + meta_level + "/5.png does not exist"),
@@ -104,8 +102,8 @@ TEST(MaskConversion, BadInputsNameTheFile) {
       << message;
 
   const std::string gap = dir / "g.jpg";
-  Write(gap + "/0/0.png", Rect(0, 0, 4, 4));
-  Write(gap + "/2/0.png", Rect(0, 0, 4, 4));
+  WriteImage(gap + "/0/0.png", Rect(0, 0, 4, 4));
+  WriteImage(gap + "/2/0.png", Rect(0, 0, 4, 4));
   message = InputErrorMessage([&] { ConvertMaskImage(dir.path(), "g.jpg", dir / "out"); });
   EXPECT_NE(message.find(gap + "/1: level folder 1 is missing"), std::string::npos) << message;
 

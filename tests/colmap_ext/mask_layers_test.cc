@@ -3,16 +3,19 @@
 #include <gtest/gtest.h>
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
-#include "tests/colmap_ext/test_util.h"
+#include "tests/support/error_message.h"
+#include "tests/support/files.h"
+#include "tests/support/image_files.h"
+#include "tests/support/temp_dir.h"
 
 namespace msp {
 namespace {
 
 using test::InputErrorMessage;
 using test::TempDir;
+using test::WriteImage;
 
 constexpr int kWidth = 8;
 constexpr int kHeight = 6;
@@ -26,9 +29,11 @@ cv::Mat Layer(int split, int width = kWidth, int height = kHeight) {
   return mat;
 }
 
-void Write(const std::string& path, const cv::Mat& mat) {
-  test::WriteRaw(path, "");  // creates the parent folders
-  ASSERT_TRUE(cv::imwrite(path, mat));
+// Levels 0 .. num_levels - 1 of image `name` under `mask_path`, each split at column 4.
+void WriteLayers(const std::string& mask_path, const std::string& name, int num_levels) {
+  for (int level = 0; level < num_levels; ++level) {
+    WriteImage(MaskLayerPath(mask_path, name, level), Layer(4));
+  }
 }
 
 MaskImage Image(const std::string& name, int work_width = kWidth, int work_height = kHeight) {
@@ -44,7 +49,7 @@ TEST(MaskLayers, PathsFollowTheDocumentedNaming) {
 TEST(MaskLayers, ReadsEveryLevelAndResamplesToTheWorkingSize) {
   TempDir dir;
   for (int level = 0; level < 3; ++level) {
-    Write(MaskLayerPath(dir.path(), "sub/a.jpg", level), Layer(2 + 2 * level));
+    WriteImage(MaskLayerPath(dir.path(), "sub/a.jpg", level), Layer(2 + 2 * level));
   }
   EXPECT_EQ(CountMaskLevels(dir.path(), "sub/a.jpg"), 3);
   const LabelLayers layers = ReadMaskLayers(dir.path(), Image("sub/a.jpg", 4, 3), 3);
@@ -59,8 +64,7 @@ TEST(MaskLayers, ReadsEveryLevelAndResamplesToTheWorkingSize) {
 
 TEST(MaskLayers, ImagesWithoutLayersFallBackAndTheLogSaysSo) {
   TempDir dir;
-  for (int level = 0; level < 3; ++level)
-    Write(MaskLayerPath(dir.path(), "a.jpg", level), Layer(4));
+  WriteLayers(dir.path(), "a.jpg", 3);
   std::ostringstream log;
   const std::vector<ImageLabelLayers> result =
       LoadMaskLayers(dir.path(), {Image("a.jpg"), Image("b.jpg")}, 3, &log);
@@ -86,8 +90,7 @@ TEST(MaskLayers, NoMaskFolderMeansEmbeddedForAll) {
 
 TEST(MaskLayers, AnyNumberOfLevelsIsAcceptedAndNoted) {
   TempDir dir;
-  for (int level = 0; level < 5; ++level)
-    Write(MaskLayerPath(dir.path(), "a.jpg", level), Layer(4));
+  WriteLayers(dir.path(), "a.jpg", 5);
   std::ostringstream log;
   const std::vector<ImageLabelLayers> result =
       LoadMaskLayers(dir.path(), {Image("a.jpg")}, 3, &log);
@@ -98,7 +101,7 @@ TEST(MaskLayers, AnyNumberOfLevelsIsAcceptedAndNoted) {
 TEST(MaskLayers, WrongSizeNamesTheFile) {
   TempDir dir;
   const std::string path = MaskLayerPath(dir.path(), "a.jpg", 0);
-  Write(path, Layer(4, kWidth + 1, kHeight));
+  WriteImage(path, Layer(4, kWidth + 1, kHeight));
   const std::string message =
       InputErrorMessage([&] { ReadMaskLayers(dir.path(), Image("a.jpg"), 1); });
   EXPECT_NE(message.find(path), std::string::npos) << message;
@@ -110,13 +113,13 @@ TEST(MaskLayers, EightBitAndColourLayersAreRejected) {
   const std::string path = MaskLayerPath(dir.path(), "a.jpg", 0);
   cv::Mat eight_bit;
   Layer(4).convertTo(eight_bit, CV_8U);
-  Write(path, eight_bit);
+  WriteImage(path, eight_bit);
   std::string message = InputErrorMessage([&] { ReadMaskLayers(dir.path(), Image("a.jpg"), 1); });
   EXPECT_NE(message.find(path + ": mask layer is a 8-bit 1-channel image"), std::string::npos)
       << message;
   cv::Mat colour;
   cv::merge(std::vector<cv::Mat>{Layer(4), Layer(4), Layer(4)}, colour);
-  Write(path, colour);
+  WriteImage(path, colour);
   message = InputErrorMessage([&] { ReadMaskLayers(dir.path(), Image("a.jpg"), 1); });
   EXPECT_NE(message.find("16-bit 3-channel"), std::string::npos) << message;
 }
@@ -132,17 +135,15 @@ TEST(MaskLayers, UnreadableFileNamesTheFile) {
 
 TEST(MaskLayers, GapsAndInconsistentLevelCountsAreErrors) {
   TempDir dir;
-  Write(MaskLayerPath(dir.path(), "gap.jpg", 0), Layer(4));
-  Write(MaskLayerPath(dir.path(), "gap.jpg", 2), Layer(4));
+  WriteImage(MaskLayerPath(dir.path(), "gap.jpg", 0), Layer(4));
+  WriteImage(MaskLayerPath(dir.path(), "gap.jpg", 2), Layer(4));
   std::string message = InputErrorMessage([&] { CountMaskLevels(dir.path(), "gap.jpg"); });
   EXPECT_NE(message.find(MaskLayerPath(dir.path(), "gap.jpg", 1) + ": mask level 1 is missing"),
             std::string::npos)
       << message;
 
-  for (int level = 0; level < 3; ++level)
-    Write(MaskLayerPath(dir.path(), "a.jpg", level), Layer(4));
-  for (int level = 0; level < 2; ++level)
-    Write(MaskLayerPath(dir.path(), "b.jpg", level), Layer(4));
+  WriteLayers(dir.path(), "a.jpg", 3);
+  WriteLayers(dir.path(), "b.jpg", 2);
   message = InputErrorMessage([&] {
     LoadMaskLayers(dir.path(), {Image("a.jpg"), Image("b.jpg")}, 3, nullptr);
   });

@@ -7,19 +7,7 @@ set -u
 MSP=$1
 DISPATCHER=$2
 readonly LIMIT=30
-TMP=$(mktemp -d) || exit 1
-trap 'rm -rf "$TMP"' EXIT
-failures=0
-
-pass() { echo "ok   $1"; }
-fail() { echo "FAIL $1"; failures=$((failures + 1)); }
-expect_eq() {
-  if [ "$2" = "$3" ]; then pass "$1"; else
-    fail "$1"; printf '  expected: [%s]\n  actual:   [%s]\n' "$3" "$2"; fi
-}
-expect_contains() {
-  case "$2" in *"$3"*) pass "$1" ;; *) fail "$1"; printf '  [%s] not in:\n%s\n' "$3" "$2" ;; esac
-}
+. "$(dirname "$0")/../support/checks.sh"
 # run ARGS...: sets rc, out (stdout) and err (stderr).
 run() {
   timeout "$LIMIT" "$@" >"$TMP/out" 2>"$TMP/err"
@@ -70,8 +58,4 @@ expect_contains "colmap msp_stereo --help reaches msp_stereo" "$out" "--MspStere
 run env PATH=/usr/bin:/bin "$DISPATCHER" msp_stereo --workspace_path "$missing"
 expect_eq "colmap msp_stereo on a missing workspace: exit code" "$rc" 1
 
-if [ "$failures" -ne 0 ]; then
-  echo "$failures check(s) failed"
-  exit 1
-fi
-echo "all checks passed"
+finish

@@ -5,7 +5,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "tests/colmap_ext/test_util.h"
+#include "tests/support/temp_dir.h"
 
 namespace msp {
 namespace {

@@ -6,33 +6,19 @@
 #include <vector>
 
 #include "colmap_ext/patch_match_config.h"
+#include "tests/support/sparse_models.h"
 
 namespace msp {
 namespace {
 
-// An image looking along +z (identity rotation) with its centre at `center`:
-// t = -R C = -C.
-SparseImage ImageAt(uint32_t id, double x, double y, double z) {
-  SparseImage image;
-  image.image_id = id;
-  image.camera_id = 1;
-  image.name = "img" + std::to_string(id) + ".png";
-  image.tvec[0] = -x;
-  image.tvec[1] = -y;
-  image.tvec[2] = -z;
-  return image;
-}
+using test::ImageAt;
+using test::PointAt;
 
 // Adds `count` points near the origin observed by all `image_ids`.
 void AddSharedPoints(const std::vector<uint32_t>& image_ids, int count, SparseModel* model) {
   for (int i = 0; i < count; ++i) {
-    SparsePoint3D point;
-    point.point3D_id = model->points3D.size();
-    point.xyz[0] = 0.01 * i;
-    point.xyz[1] = -0.02 * i;
-    point.xyz[2] = 0.03 * i;
-    for (uint32_t id : image_ids) point.track.push_back({id, 0});
-    model->points3D.push_back(point);
+    model->points3D.push_back(
+        PointAt(model->points3D.size(), 0.01 * i, -0.02 * i, 0.03 * i, image_ids));
   }
 }
 
@@ -40,13 +26,7 @@ void AddSharedPoints(const std::vector<uint32_t>& image_ids, int count, SparseMo
 // by a baseline b see the points at an angle of about atan(b / 10).
 SparseModel OverlapModel() {
   SparseModel model;
-  SparseCamera camera;
-  camera.camera_id = 1;
-  camera.model_id = kSimplePinhole;
-  camera.width = 100;
-  camera.height = 100;
-  camera.params = {100, 50, 50};
-  model.cameras = {camera};
+  model.cameras = {test::MakeSparseCamera(1, kSimplePinhole, 100, 100, {100, 50, 50})};
   model.images = {
       ImageAt(100, 0, 0, -10),     // 0: reference
       ImageAt(101, 1, 0, -10),     // 1: ~5.7 deg, 5 shared points
@@ -85,22 +65,12 @@ TEST(SourceSelection, UsesThe75thPercentileAngle) {
   // ~0.17 deg, the near ones ~16.7 deg. Sorted angles [far, far, near, near]:
   // the 75th percentile is element round(0.75 * 3) = 2, a near one.
   AddSharedPoints({100, 102}, 2, &model);
-  for (int i = 0; i < 2; ++i) {
-    SparsePoint3D far;
-    far.point3D_id = 100 + i;
-    far.xyz[2] = 1000.0 + i;
-    far.track = {{100, 0}, {102, 0}};
-    model.points3D.push_back(far);
-  }
+  for (int i = 0; i < 2; ++i)
+    model.points3D.push_back(PointAt(100 + i, 0, 0, 1000.0 + i, {100, 102}));
   EXPECT_EQ(SelectAutoSources(model, 0, 5, 5.0), (std::vector<int>{2}));
   // With six far points, element round(0.75 * 7) = 5 of 8 is a far one.
-  for (int i = 0; i < 4; ++i) {
-    SparsePoint3D far;
-    far.point3D_id = 200 + i;
-    far.xyz[2] = 1002.0 + i;
-    far.track = {{100, 0}, {102, 0}};
-    model.points3D.push_back(far);
-  }
+  for (int i = 0; i < 4; ++i)
+    model.points3D.push_back(PointAt(200 + i, 0, 0, 1002.0 + i, {100, 102}));
   EXPECT_EQ(SelectAutoSources(model, 0, 5, 5.0), (std::vector<int>{}));
 }
 
@@ -122,26 +92,12 @@ TEST(DepthRange, PercentilesOfObservedDepths) {
   model.images = {ImageAt(1, 0, 0, 0), ImageAt(2, 0, 0, -100), ImageAt(3, 0, 0, 0)};
   // Image 1 observes z = 1..200, plus points behind it that must be ignored.
   for (int z = 200; z >= 1; --z) {
-    SparsePoint3D point;
-    point.point3D_id = z;
-    point.xyz[0] = 0.5 * z;  // off-axis: depth is z, not the distance
-    point.xyz[2] = z;
-    point.track = {{1, 0}, {2, 0}};
-    model.points3D.push_back(point);
+    // Off-axis: the depth is z, not the distance.
+    model.points3D.push_back(PointAt(z, 0.5 * z, 0, z, {1, 2}));
   }
-  for (int i = 0; i < 50; ++i) {
-    SparsePoint3D behind;
-    behind.point3D_id = 1000 + i;
-    behind.xyz[2] = -5.0 - i;
-    behind.track = {{1, 0}};
-    model.points3D.push_back(behind);
-  }
+  for (int i = 0; i < 50; ++i) model.points3D.push_back(PointAt(1000 + i, 0, 0, -5.0 - i, {1}));
   // A point no track of image 1 contains does not count, however near.
-  SparsePoint3D other;
-  other.point3D_id = 5000;
-  other.xyz[2] = 0.001;
-  other.track = {{2, 0}};
-  model.points3D.push_back(other);
+  model.points3D.push_back(PointAt(5000, 0, 0, 0.001, {2}));
 
   // 200 depths 1..200: indices 200*0.01 = 2 and 200*0.99 = 198 -> 3 and 199.
   const auto range = ComputeDepthRange(model, 0);
@@ -162,13 +118,7 @@ TEST(DepthRange, PercentilesOfObservedDepths) {
 TEST(DepthRange, SmallCountsUseTheFirstAndLastIndices) {
   SparseModel model;
   model.images = {ImageAt(1, 0, 0, 0)};
-  for (int z : {4, 2, 8}) {
-    SparsePoint3D point;
-    point.point3D_id = z;
-    point.xyz[2] = z;
-    point.track = {{1, 0}};
-    model.points3D.push_back(point);
-  }
+  for (int z : {4, 2, 8}) model.points3D.push_back(PointAt(z, 0, 0, z, {1}));
   // 3 * 0.01 -> 0 and 3 * 0.99 -> 2.
   const auto range = ComputeDepthRange(model, 0);
   EXPECT_FLOAT_EQ(range.first, 2.0f * 0.75f);

@@ -6,7 +6,10 @@
 #include <sstream>
 #include <string>
 
-#include "tests/colmap_ext/test_util.h"
+#include "tests/support/error_message.h"
+#include "tests/support/files.h"
+#include "tests/support/sparse_models.h"
+#include "tests/support/temp_dir.h"
 
 namespace msp {
 namespace {
@@ -16,19 +19,9 @@ using test::TempDir;
 
 SparseModel MakeModel() {
   SparseModel model;
-  SparseCamera pinhole;
-  pinhole.camera_id = 3;
-  pinhole.model_id = kPinhole;
-  pinhole.width = 640;
-  pinhole.height = 480;
-  pinhole.params = {500.25, 501.5, 320.125, 239.875};
-  SparseCamera radial;
-  radial.camera_id = 7;
-  radial.model_id = kSimpleRadial;
-  radial.width = 100;
-  radial.height = 80;
-  radial.params = {90.0, 50.0, 40.0, 0.0123456789012345};
-  model.cameras = {pinhole, radial};
+  model.cameras = {
+      test::MakeSparseCamera(3, kPinhole, 640, 480, {500.25, 501.5, 320.125, 239.875}),
+      test::MakeSparseCamera(7, kSimpleRadial, 100, 80, {90.0, 50.0, 40.0, 0.0123456789012345})};
 
   // Not in id order: file order is the mvs::Model index and must survive.
   SparseImage a;
@@ -156,13 +149,7 @@ TEST(SparseModel, BinaryLayoutMatchesColmap) {
   put(params, sizeof(params));
 
   SparseModel model;
-  SparseCamera camera;
-  camera.camera_id = 9;
-  camera.model_id = kPinhole;
-  camera.width = 64;
-  camera.height = 48;
-  camera.params = {50.0, 51.0, 32.0, 24.0};
-  model.cameras = {camera};
+  model.cameras = {test::MakeSparseCamera(9, kPinhole, 64, 48, {50.0, 51.0, 32.0, 24.0})};
   TempDir dir;
   WriteSparseModelBinary(model, dir.path());
   EXPECT_EQ(test::ReadRaw(dir / "cameras.bin"), bytes);

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/error_message.h"
+
 namespace msp {
 namespace {
 
@@ -19,12 +21,7 @@ StereoCommandOptions Valid() {
 
 // The message of the OptionError thrown by Check, or "" if none.
 std::string CheckError(const StereoCommandOptions& options) {
-  try {
-    CheckStereoCommandOptions(options);
-  } catch (const OptionError& e) {
-    return e.what();
-  }
-  return "";
+  return test::ErrorMessage<OptionError>([&] { CheckStereoCommandOptions(options); });
 }
 
 // The option an "invalid value V for --<name>: ..." message names.

@@ -1,7 +1,6 @@
 #include "options/option_parser.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -9,6 +8,10 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "tests/support/error_message.h"
+#include "tests/support/files.h"
+#include "tests/support/temp_dir.h"
 
 namespace msp {
 namespace {
@@ -78,28 +81,19 @@ StereoCommandOptions Parse(std::vector<std::string> args, ParseStatus* status = 
   return options;
 }
 
+// The message of the OptionError the parser throws, or "" if none.
 std::string ParseError(const std::vector<std::string>& args) {
-  try {
-    Parse(args);
-  } catch (const OptionError& e) {
-    return e.what();
-  }
-  return "";
+  return test::ErrorMessage<OptionError>([&] { Parse(args); });
 }
 
-// A temporary ini file removed at the end of the test.
+// An ini file in a scratch folder removed at the end of the test.
 class IniFile {
  public:
-  explicit IniFile(const std::string& text)
-      : path_(::testing::TempDir() + "msp_option_parser_test_" + std::to_string(::getpid()) + "_" +
-              ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".ini") {
-    std::ofstream(path_) << text;
-  }
-  ~IniFile() { std::remove(path_.c_str()); }
-  const std::string& path() const { return path_; }
+  explicit IniFile(const std::string& text) { test::WriteRaw(path(), text); }
+  std::string path() const { return dir_ / "project.ini"; }
 
  private:
-  std::string path_;
+  test::TempDir dir_;
 };
 
 TEST(OptionParser, DefaultsEqualColmap) {

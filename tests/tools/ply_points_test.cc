@@ -2,19 +2,18 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <fstream>
 
 #include "colmap_ext/errors.h"
+#include "tests/support/temp_dir.h"
 
 namespace msp {
 namespace eval {
 namespace {
 
-std::string TempPath(const std::string& name) { return testing::TempDir() + "/" + name; }
-
 TEST(ReadPlyPoints, ReadsColmapFusedLayout) {
-  const std::string path = TempPath("fused_layout.ply");
+  const test::TempDir dir;
+  const std::string path = dir / "fused_layout.ply";
   {
     std::ofstream f(path, std::ios::binary);
     f << "ply\nformat binary_little_endian 1.0\nelement vertex 2\n"
@@ -32,11 +31,11 @@ TEST(ReadPlyPoints, ReadsColmapFusedLayout) {
   ASSERT_EQ(ply.points.size(), 2u);
   EXPECT_EQ(ply.points[1], Eigen::Vector3f(2.0f, 2.0f, -3.5f));
   EXPECT_TRUE(ply.num_views.empty());
-  std::remove(path.c_str());
 }
 
 TEST(ReadPlyPoints, ReadsAsciiWithNumViews) {
-  const std::string path = TempPath("ascii_views.ply");
+  const test::TempDir dir;
+  const std::string path = dir / "ascii_views.ply";
   {
     std::ofstream f(path);
     f << "ply\nformat ascii 1.0\nelement vertex 2\nproperty double x\nproperty double y\n"
@@ -46,11 +45,11 @@ TEST(ReadPlyPoints, ReadsAsciiWithNumViews) {
   ASSERT_EQ(ply.num_views.size(), 2u);
   EXPECT_EQ(ply.num_views[1], 7);
   EXPECT_EQ(ply.points[1], Eigen::Vector3f(1, 2, 3));
-  std::remove(path.c_str());
 }
 
 TEST(ReadPlyPoints, TruncatedBodyIsAnError) {
-  const std::string path = TempPath("truncated.ply");
+  const test::TempDir dir;
+  const std::string path = dir / "truncated.ply";
   {
     std::ofstream f(path, std::ios::binary);
     f << "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
@@ -59,8 +58,7 @@ TEST(ReadPlyPoints, TruncatedBodyIsAnError) {
     f.write(reinterpret_cast<const char*>(xyz), sizeof(xyz));
   }
   EXPECT_THROW(ReadPlyPoints(path), InputError);
-  EXPECT_THROW(ReadPlyPoints(TempPath("does_not_exist.ply")), InputError);
-  std::remove(path.c_str());
+  EXPECT_THROW(ReadPlyPoints(dir / "does_not_exist.ply"), InputError);
 }
 
 }  // namespace

@@ -1,36 +1,25 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <vector>
 
 #include "core/cost/window_batch.h"
 #include "core/cost/window_cost.h"
 #include "core/math/rng.h"
+#include "tests/support/images.h"
 
 namespace msp {
 namespace core {
 namespace {
 
+using test::Image;
+
 constexpr int kW = 48, kH = 36;
 const NccParams kUniform{5, 2, 0, 5.0f, 0.2f};
 
-std::vector<float> Noise(uint64_t seed) {
-  std::vector<float> img(kW * kH);
-  for (int i = 0; i < kW * kH; ++i) img[i] = RandomUniform(Mix64(seed), i);
-  return img;
-}
-
-ImageView View(const std::vector<float>& img) { return ImageView{img.data(), kW, kH, kW}; }
-
-// A mild projective warp: scaled, sheared and shifted a little.
-Mat3 Warp(float shift_x, float shift_y) {
-  return Mat3{{1.03f, 0.02f, shift_x, -0.015f, 0.98f, shift_y, 2e-4f, -1e-4f, 1.0f}};
-}
-
 TEST(RefWindow, PreparedWindowIsNormalised) {
-  const std::vector<float> img = Noise(3);
+  const Image img = test::NoiseImage(kW, kH, 3);
   RefWindow w;
-  PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, &w);
   ASSERT_EQ(w.num_samples, 36);
   EXPECT_EQ(w.textured, 1);
   float sum = 0.0f, sum_sq = 0.0f;
@@ -49,28 +38,28 @@ TEST(RefWindow, PreparedWindowIsNormalised) {
 }
 
 TEST(RefWindow, BorderWindowKeepsTheSamplesInsideTheReference) {
-  const std::vector<float> img = Noise(3);
+  const Image img = test::NoiseImage(kW, kH, 3);
   RefWindow w;
   // Columns -2, 0, 2, 4, 6, 8: five of six inside; rows all inside.
-  PrepareRefWindow(View(img), 3, 15, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 3, 15, 5, 2, 0, &w);
   EXPECT_EQ(w.clipped, 1);
   ASSERT_EQ(w.num_samples, 30);
   for (int k = 0; k < w.num_samples; ++k) EXPECT_GE(w.x[k], 0.0f);
   // The corner: columns and rows 1, 3, 5 only; the centre (0, 0) is not a sample.
-  PrepareRefWindow(View(img), 0, 0, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 0, 0, 5, 2, 0, &w);
   EXPECT_EQ(w.num_samples, 9);
-  PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, &w);
   EXPECT_EQ(w.clipped, 0);
 }
 
 TEST(RefWindow, BilateralAndLargeWindowsTakeTheGeneralPath) {
-  const std::vector<float> img = Noise(3);
+  const Image img = test::NoiseImage(kW, kH, 3);
   RefWindow w;
-  PrepareRefWindow(View(img), 20, 15, 5, 2, 1, &w);
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 1, &w);
   EXPECT_EQ(w.num_samples, 0);
-  PrepareRefWindow(View(img), 20, 15, 5, 1, 0, &w);  // 121 samples
+  PrepareRefWindow(img.View(), 20, 15, 5, 1, 0, &w);  // 121 samples
   EXPECT_EQ(w.num_samples, 0);
-  PrepareRefWindow(View(img), 20, 15, 7, 2, 0, &w);  // 8 x 8 = 64 still fits
+  PrepareRefWindow(img.View(), 20, 15, 7, 2, 0, &w);  // 8 x 8 = 64 still fits
   EXPECT_EQ(w.num_samples, 64);
 }
 
@@ -89,24 +78,24 @@ bool OnTheBorder(const RefWindow& w, const Mat3& H) {
 }
 
 TEST(RefWindow, CostEqualsTheGeneralNcc) {
-  const std::vector<float> ref = Noise(3);
-  const std::vector<float> src = Noise(4);
-  const std::vector<float> same = ref;
+  const Image ref = test::NoiseImage(kW, kH, 3);
+  const Image src = test::NoiseImage(kW, kH, 4);
+  const Image same = ref;
   int fast = 0, partial = 0;
   for (int row = 5; row < kH - 5; row += 3) {
     for (int col = 5; col < kW - 5; col += 3) {
       RefWindow w;
-      PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
+      PrepareRefWindow(ref.View(), col, row, 5, 2, 0, &w);
       // The larger shifts push windows near the borders partly out of the source.
-      for (const Mat3& H :
-           {Warp(0.3f, -0.4f), Warp(1.7f, 0.6f), Warp(-2.5f, 3.2f), Warp(-6.0f, 4.5f)}) {
+      for (const Mat3& H : {test::MildWarp(0.3f, -0.4f), test::MildWarp(1.7f, 0.6f),
+                            test::MildWarp(-2.5f, 3.2f), test::MildWarp(-6.0f, 4.5f)}) {
         if (OnTheBorder(w, H)) continue;
-        for (const std::vector<float>* s : {&src, &same}) {
-          const float general = GeneralNccCost(View(ref), View(*s), H, col, row, kUniform);
-          EXPECT_NEAR(WindowNccCost(w, View(ref), View(*s), H, kUniform), general, 2e-4f)
+        for (const Image* s : {&src, &same}) {
+          const float general = GeneralNccCost(ref.View(), s->View(), H, col, row, kUniform);
+          EXPECT_NEAR(WindowNccCost(w, ref.View(), s->View(), H, kUniform), general, 2e-4f)
               << col << "," << row;
           SourceSums sums;
-          const bool whole = WholeWindowSums(w, View(*s), H, &sums);
+          const bool whole = WholeWindowSums(w, s->View(), H, &sums);
           fast += whole;
           partial += !whole && general < kMaxCost;
         }
@@ -121,24 +110,25 @@ TEST(RefWindow, CostEqualsTheGeneralNcc) {
 // outside its own samples: the same cost as GeneralNccCost, which skips the
 // samples outside the reference.
 TEST(RefWindow, BorderWindowCostEqualsTheGeneralNcc) {
-  const std::vector<float> ref = Noise(7);
-  const std::vector<float> src = Noise(8);
-  const std::vector<float> same = ref;
+  const Image ref = test::NoiseImage(kW, kH, 7);
+  const Image src = test::NoiseImage(kW, kH, 8);
+  const Image same = ref;
   int compared = 0, centre_out = 0;
   for (int row = 0; row < kH; ++row) {
     for (int col = 0; col < kW; ++col) {
       if (col >= 5 && row >= 5 && col < kW - 5 && row < kH - 5) continue;
       RefWindow w;
-      PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
+      PrepareRefWindow(ref.View(), col, row, 5, 2, 0, &w);
       ASSERT_EQ(w.clipped, 1);
-      for (const Mat3& H : {Warp(0.3f, -0.4f), Warp(-0.6f, 0.7f), Warp(1.7f, 0.6f)}) {
+      for (const Mat3& H :
+           {test::MildWarp(0.3f, -0.4f), test::MildWarp(-0.6f, 0.7f), test::MildWarp(1.7f, 0.6f)}) {
         if (OnTheBorder(w, H)) continue;
-        for (const std::vector<float>* s : {&src, &same}) {
-          const float general = GeneralNccCost(View(ref), View(*s), H, col, row, kUniform);
-          EXPECT_NEAR(WindowNccCost(w, View(ref), View(*s), H, kUniform), general, 2e-4f)
+        for (const Image* s : {&src, &same}) {
+          const float general = GeneralNccCost(ref.View(), s->View(), H, col, row, kUniform);
+          EXPECT_NEAR(WindowNccCost(w, ref.View(), s->View(), H, kUniform), general, 2e-4f)
               << col << "," << row;
           ++compared;
-          centre_out += !CentreInSource(H, View(*s), col, row);
+          centre_out += !CentreInSource(H, s->View(), col, row);
         }
       }
     }
@@ -150,23 +140,23 @@ TEST(RefWindow, BorderWindowCostEqualsTheGeneralNcc) {
   // padding lanes repeat the centre and would catch it; the scalar path
   // has no padding.)
   RefWindow corner;
-  PrepareRefWindow(View(ref), 0, 0, 5, 2, 0, &corner);
+  PrepareRefWindow(ref.View(), 0, 0, 5, 2, 0, &corner);
   const Mat3 half_left_up = {{1, 0, -0.5f, 0, 1, -0.5f, 0, 0, 1}};
   SourceSums sums;
-  ASSERT_TRUE(WholeWindowSumsScalar(corner, View(src), half_left_up, &sums));
-  EXPECT_EQ(GeneralNccCost(View(ref), View(src), half_left_up, 0, 0, kUniform), kMaxCost);
-  EXPECT_EQ(WindowNccCost(corner, View(ref), View(src), half_left_up, kUniform), kMaxCost);
+  ASSERT_TRUE(WholeWindowSumsScalar(corner, src.View(), half_left_up, &sums));
+  EXPECT_EQ(GeneralNccCost(ref.View(), src.View(), half_left_up, 0, 0, kUniform), kMaxCost);
+  EXPECT_EQ(WindowNccCost(corner, ref.View(), src.View(), half_left_up, kUniform), kMaxCost);
 }
 
 // The batch's costs of the window at (col, row) under the warps H in
 // `lanes`, and each warp's cost alone (kMaxCost outside `lanes`).
-void BatchAndAlone(const std::vector<float>& ref, const std::vector<float>& src, const Mat3* H,
-                   uint32_t lanes, int col, int row, RefWindow* w, float* batch, float* alone) {
-  PrepareRefWindow(View(ref), col, row, 5, 2, 0, w);
-  WindowNccCosts(*w, View(ref), View(src), H, lanes, kUniform, batch);
+void BatchAndAlone(const Image& ref, const Image& src, const Mat3* H, uint32_t lanes, int col,
+                   int row, RefWindow* w, float* batch, float* alone) {
+  PrepareRefWindow(ref.View(), col, row, 5, 2, 0, w);
+  WindowNccCosts(*w, ref.View(), src.View(), H, lanes, kUniform, batch);
   for (int l = 0; l < kWindowLanes; ++l) {
     alone[l] =
-        ((lanes >> l) & 1u) ? WindowNccCost(*w, View(ref), View(src), H[l], kUniform) : kMaxCost;
+        ((lanes >> l) & 1u) ? WindowNccCost(*w, ref.View(), src.View(), H[l], kUniform) : kMaxCost;
   }
 }
 
@@ -174,11 +164,12 @@ void BatchAndAlone(const std::vector<float>& ref, const std::vector<float>& src,
 // windows inside the source, leaving it in part, leaving it whole, over the
 // reference border, and a lane left unused.
 TEST(RefWindow, BatchOfWarpsCostsWhatEachWarpCostsAlone) {
-  const std::vector<float> ref = Noise(11);
-  const std::vector<float> src = Noise(12);
-  const Mat3 H[kWindowLanes] = {Warp(0.3f, -0.4f), Warp(-0.6f, 0.7f), Warp(1.7f, 0.6f),
-                                Warp(9.5f, 0.2f),  Warp(-8.0f, 3.0f), Warp(60.0f, 0.0f),
-                                Warp(2.2f, -7.5f), Warp(0.0f, 0.0f)};
+  const Image ref = test::NoiseImage(kW, kH, 11);
+  const Image src = test::NoiseImage(kW, kH, 12);
+  const Mat3 H[kWindowLanes] = {test::MildWarp(0.3f, -0.4f), test::MildWarp(-0.6f, 0.7f),
+                                test::MildWarp(1.7f, 0.6f),  test::MildWarp(9.5f, 0.2f),
+                                test::MildWarp(-8.0f, 3.0f), test::MildWarp(60.0f, 0.0f),
+                                test::MildWarp(2.2f, -7.5f), test::MildWarp(0.0f, 0.0f)};
   const uint32_t lanes = 0x7fu;  // lane 7 unused
   int compared = 0, partial = 0, clipped = 0;
   for (int row = 0; row < kH; ++row) {
@@ -189,8 +180,8 @@ TEST(RefWindow, BatchOfWarpsCostsWhatEachWarpCostsAlone) {
       for (int l = 0; l < 7; ++l) {
         EXPECT_NEAR(costs[l], alone[l], 2e-4f) << col << "," << row << " lane " << l;
         SourceSums sums;
-        partial += !WholeWindowSumsScalar(w, View(src), H[l], &sums) &&
-                   CentreInSource(H[l], View(src), col, row) && costs[l] < kMaxCost;
+        partial += !WholeWindowSumsScalar(w, src.View(), H[l], &sums) &&
+                   CentreInSource(H[l], src.View(), col, row) && costs[l] < kMaxCost;
         ++compared;
       }
       clipped += w.clipped;
@@ -201,21 +192,21 @@ TEST(RefWindow, BatchOfWarpsCostsWhatEachWarpCostsAlone) {
   EXPECT_GT(partial, 500);  // partial windows with a cost were among them
   EXPECT_GT(clipped, 500);
   // An untextured reference window costs kMaxCost in every lane.
-  const std::vector<float> flat(kW * kH, 0.5f);
+  const Image flat = test::FlatImage(kW, kH, 0.5f);
   RefWindow w;
-  PrepareRefWindow(View(flat), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(flat.View(), 20, 15, 5, 2, 0, &w);
   float costs[kWindowLanes];
-  WindowNccCosts(w, View(flat), View(src), H, lanes, kUniform, costs);
+  WindowNccCosts(w, flat.View(), src.View(), H, lanes, kUniform, costs);
   for (int l = 0; l < kWindowLanes; ++l) EXPECT_EQ(costs[l], kMaxCost);
 }
 
 // Lanes whose warps all keep the window inside the source (the batch's
 // shortcut), and such warps among others, cost what each costs alone.
 TEST(RefWindow, BatchOfWholeWarpsCostsWhatEachWarpCostsAlone) {
-  const std::vector<float> ref = Noise(13);
-  const std::vector<float> src = Noise(14);
+  const Image ref = test::NoiseImage(kW, kH, 13);
+  const Image src = test::NoiseImage(kW, kH, 14);
   Mat3 H[kWindowLanes];
-  for (int l = 0; l < kWindowLanes; ++l) H[l] = Warp(0.37f * l - 1.2f, 0.9f - 0.23f * l);
+  for (int l = 0; l < kWindowLanes; ++l) H[l] = test::MildWarp(0.37f * l - 1.2f, 0.9f - 0.23f * l);
   for (const uint32_t lanes : {0xffu, 0x5au, 0x80u}) {
     for (int row = 0; row < kH; ++row) {
       for (int col = 0; col < kW; ++col) {
@@ -231,15 +222,15 @@ TEST(RefWindow, BatchOfWholeWarpsCostsWhatEachWarpCostsAlone) {
 }
 
 TEST(RefWindow, BoxHoldsTheSamplesAndTheCentre) {
-  const std::vector<float> img = Noise(3);
+  const Image img = test::NoiseImage(kW, kH, 3);
   RefWindow w;
-  PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, &w);
   EXPECT_EQ(w.box[0], 15.0f);
   EXPECT_EQ(w.box[1], 25.0f);
   EXPECT_EQ(w.box[2], 10.0f);
   EXPECT_EQ(w.box[3], 20.0f);
   // The corner window's samples are columns and rows 1, 3, 5; its centre is (0, 0).
-  PrepareRefWindow(View(img), 0, 0, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 0, 0, 5, 2, 0, &w);
   EXPECT_EQ(w.box[0], 0.0f);
   EXPECT_EQ(w.box[1], 5.0f);
   EXPECT_EQ(w.box[2], 0.0f);
@@ -258,7 +249,7 @@ TEST(RefWindow, WholeBoxLanesVouchOnlyForBoxesInside) {
       const uint64_t key = Mix64(1000u + trial * kWindowLanes + l);
       const float shift_x = 50.0f * RandomUniform(key, 0) - 25.0f;
       const float shift_y = 40.0f * RandomUniform(key, 1) - 20.0f;
-      H[l] = Warp(shift_x, shift_y);
+      H[l] = test::MildWarp(shift_x, shift_y);
       H[l].m[6] = 0.04f * RandomUniform(key, 2) - 0.02f;  // strongly projective, at times behind
       H[l].m[7] = 0.04f * RandomUniform(key, 3) - 0.02f;
     }
@@ -284,21 +275,22 @@ TEST(RefWindow, WholeBoxLanesVouchOnlyForBoxesInside) {
 // kMaxCost: their centre fails CentreInSource, and their window (unless
 // clipped) is not whole.
 TEST(RefWindow, CentreTestDropsOnlyLanesThatCostMax) {
-  const std::vector<float> ref = Noise(15);
-  const std::vector<float> src = Noise(16);
+  const Image ref = test::NoiseImage(kW, kH, 15);
+  const Image src = test::NoiseImage(kW, kH, 16);
   int dropped = 0, kept = 0;
   for (int trial = 0; trial < 300; ++trial) {
     Mat3 H[kWindowLanes];
     for (int l = 0; l < kWindowLanes; ++l) {
       const uint64_t key = Mix64(5000u + trial * kWindowLanes + l);
-      H[l] = Warp(70.0f * RandomUniform(key, 0) - 35.0f, 56.0f * RandomUniform(key, 1) - 28.0f);
+      H[l] = test::MildWarp(70.0f * RandomUniform(key, 0) - 35.0f,
+                            56.0f * RandomUniform(key, 1) - 28.0f);
       H[l].m[6] = 0.04f * RandomUniform(key, 2) - 0.02f;  // strongly projective, at times behind
       H[l].m[7] = 0.04f * RandomUniform(key, 3) - 0.02f;
     }
     const int col = trial % kW, row = (7 * trial) % kH;
     RefWindow w;
-    PrepareRefWindow(View(ref), col, row, 5, 2, 0, &w);
-    const uint32_t near = CentreNearSourceLanes(WarpPerLane(H, 0xffu, View(src)), col, row);
+    PrepareRefWindow(ref.View(), col, row, 5, 2, 0, &w);
+    const uint32_t near = CentreNearSourceLanes(WarpPerLane(H, 0xffu, src.View()), col, row);
     for (int l = 0; l < kWindowLanes; ++l) {
       if ((near >> l) & 1u) {
         ++kept;
@@ -306,12 +298,13 @@ TEST(RefWindow, CentreTestDropsOnlyLanesThatCostMax) {
       }
       ++dropped;
       SourceSums sums;
-      EXPECT_FALSE(CentreInSource(H[l], View(src), col, row)) << "trial " << trial << " lane " << l;
+      EXPECT_FALSE(CentreInSource(H[l], src.View(), col, row))
+          << "trial " << trial << " lane " << l;
       // (A window clipped by the reference border may not hold its centre.)
       if (!w.clipped) {
-        EXPECT_FALSE(WholeWindowSumsScalar(w, View(src), H[l], &sums)) << "lane " << l;
+        EXPECT_FALSE(WholeWindowSumsScalar(w, src.View(), H[l], &sums)) << "lane " << l;
       }
-      EXPECT_EQ(WindowNccCost(w, View(ref), View(src), H[l], kUniform), kMaxCost);
+      EXPECT_EQ(WindowNccCost(w, ref.View(), src.View(), H[l], kUniform), kMaxCost);
     }
   }
   EXPECT_GT(dropped, 300);
@@ -320,54 +313,55 @@ TEST(RefWindow, CentreTestDropsOnlyLanesThatCostMax) {
 #endif
 
 TEST(RefWindow, PartialWindowNeedsItsCentreAndHalfTheSamples) {
-  const std::vector<float> img = Noise(3);
+  const Image img = test::NoiseImage(kW, kH, 3);
   RefWindow w;
-  PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, &w);
   // Samples land at x = 42..52: the three columns past x = 47 leave the
   // source, half the window stays, and so does the centre (x = 47).
   const Mat3 right_third_out = {{1, 0, 27.0f, 0, 1, 0, 0, 0, 1}};
-  EXPECT_LT(WindowNccCost(w, View(img), View(img), right_third_out, kUniform), kMaxCost);
-  EXPECT_NEAR(WindowNccCost(w, View(img), View(img), right_third_out, kUniform),
-              GeneralNccCost(View(img), View(img), right_third_out, 20, 15, kUniform), 2e-4f);
+  EXPECT_LT(WindowNccCost(w, img.View(), img.View(), right_third_out, kUniform), kMaxCost);
+  EXPECT_NEAR(WindowNccCost(w, img.View(), img.View(), right_third_out, kUniform),
+              GeneralNccCost(img.View(), img.View(), right_third_out, 20, 15, kUniform), 2e-4f);
   const Mat3 centre_out = {{1, 0, 28.0f, 0, 1, 0, 0, 0, 1}};  // centre at x = 48
-  EXPECT_EQ(WindowNccCost(w, View(img), View(img), centre_out, kUniform), kMaxCost);
+  EXPECT_EQ(WindowNccCost(w, img.View(), img.View(), centre_out, kUniform), kMaxCost);
 }
 
 TEST(RefWindow, ScalarAndVectorSumsAgree) {
-  const std::vector<float> ref = Noise(5);
-  const std::vector<float> src = Noise(6);
+  const Image ref = test::NoiseImage(kW, kH, 5);
+  const Image src = test::NoiseImage(kW, kH, 6);
   RefWindow w;
-  PrepareRefWindow(View(ref), 24, 18, 5, 2, 0, &w);
+  PrepareRefWindow(ref.View(), 24, 18, 5, 2, 0, &w);
   SourceSums scalar, vector;
-  ASSERT_TRUE(WholeWindowSumsScalar(w, View(src), Warp(0.3f, 0.2f), &scalar));
-  ASSERT_TRUE(WholeWindowSums(w, View(src), Warp(0.3f, 0.2f), &vector));
+  ASSERT_TRUE(WholeWindowSumsScalar(w, src.View(), test::MildWarp(0.3f, 0.2f), &scalar));
+  ASSERT_TRUE(WholeWindowSums(w, src.View(), test::MildWarp(0.3f, 0.2f), &vector));
   EXPECT_NEAR(scalar.s, vector.s, 1e-4f);
   EXPECT_NEAR(scalar.ss, vector.ss, 1e-4f);
   EXPECT_NEAR(scalar.rs, vector.rs, 1e-5f);
 }
 
 TEST(RefWindow, SampleOutsideTheSourceRefusesTheFastPath) {
-  const std::vector<float> img = Noise(3);
+  const Image img = test::NoiseImage(kW, kH, 3);
   RefWindow w;
-  PrepareRefWindow(View(img), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, &w);
   SourceSums sums;
   const Mat3 near_right_edge = {
       {1, 0, kW - 1.0f - 25.5f, 0, 1, 0, 0, 0, 1}};  // last column at 46.5
-  EXPECT_TRUE(WholeWindowSumsScalar(w, View(img), near_right_edge, &sums));
+  EXPECT_TRUE(WholeWindowSumsScalar(w, img.View(), near_right_edge, &sums));
   const Mat3 on_right_edge = {{1, 0, kW - 1.0f - 25.0f, 0, 1, 0, 0, 0, 1}};  // last column at 47
-  EXPECT_FALSE(WholeWindowSumsScalar(w, View(img), on_right_edge, &sums));
-  EXPECT_FALSE(WholeWindowSums(w, View(img), on_right_edge, &sums));
+  EXPECT_FALSE(WholeWindowSumsScalar(w, img.View(), on_right_edge, &sums));
+  EXPECT_FALSE(WholeWindowSums(w, img.View(), on_right_edge, &sums));
   const Mat3 behind = {{1, 0, 0, 0, 1, 0, 0, 0, -1}};
-  EXPECT_FALSE(WholeWindowSums(w, View(img), behind, &sums));
+  EXPECT_FALSE(WholeWindowSums(w, img.View(), behind, &sums));
 }
 
 TEST(RefWindow, FlatReferenceCostsMax) {
-  const std::vector<float> flat(kW * kH, 0.5f);
-  const std::vector<float> src = Noise(4);
+  const Image flat = test::FlatImage(kW, kH, 0.5f);
+  const Image src = test::NoiseImage(kW, kH, 4);
   RefWindow w;
-  PrepareRefWindow(View(flat), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(flat.View(), 20, 15, 5, 2, 0, &w);
   EXPECT_EQ(w.textured, 0);
-  EXPECT_EQ(WindowNccCost(w, View(flat), View(src), Warp(0.3f, 0.2f), kUniform), kMaxCost);
+  EXPECT_EQ(WindowNccCost(w, flat.View(), src.View(), test::MildWarp(0.3f, 0.2f), kUniform),
+            kMaxCost);
 }
 
 }  // namespace

@@ -8,7 +8,8 @@
 #include <vector>
 
 #include "deformable/nearest_reliable.h"
-#include "tests/core/test_cameras.h"
+#include "tests/support/cameras.h"
+#include "tests/support/images.h"
 
 namespace msp {
 namespace core {
@@ -22,8 +23,7 @@ constexpr float kPi = 3.14159265f;
 
 // A reference camera and the slanted plane every reliable pixel lies on.
 struct Layout {
-  Camera cam = testing_cameras::MakeCamera(kSize, kSize, 100.0f, Mat3{{1, 0, 0, 0, 1, 0, 0, 0, 1}},
-                                           Vec3{0, 0, 0});
+  Camera cam = test::SkewedIntrinsicsCamera(kSize, kSize, 100.0f, test::Identity(), Vec3{0, 0, 0});
   Vec3 normal = Normalized(Vec3{0.2f, -0.1f, -1.0f});
   float dist = 5.0f;
   std::vector<uint8_t> classes = std::vector<uint8_t>(kSize * kSize, kUnreliable);
@@ -60,20 +60,22 @@ struct Layout {
   }
 
   // The same search confined by the depth-edge map `edges` (1 = edge).
-  bool FindConfined(const std::vector<uint8_t>& edges, AnchorSet* out) const {
+  bool FindConfined(const test::EdgeMap& edges, AnchorSet* out) const {
     AnchorMaps maps = Maps();
-    maps.edges = BoundaryView{edges.data(), kSize, kSize, kSize};
+    maps.edges = edges.View();
     Rng rng = MakeRng(7);
     return FindAnchors(cam, maps, kCol, kRow, DefaultAnchorParams(0, kDepthRange, kMaxDistance),
                        &rng, out);
   }
 };
 
-// A vertical depth edge (2 px wide, as boundary maps are) at columns x, x+1.
-std::vector<uint8_t> VerticalEdge(int x) {
-  std::vector<uint8_t> edges(kSize * kSize, 0);
-  for (int r = 0; r < kSize; ++r) edges[r * kSize + x] = edges[r * kSize + x + 1] = 1;
-  return edges;
+// The same anchors, in the same order.
+void ExpectSameAnchors(const AnchorSet& a, const AnchorSet& b) {
+  ASSERT_EQ(a.count, b.count);
+  for (int k = 0; k < a.count; ++k) {
+    EXPECT_EQ(a.cols[k], b.cols[k]) << "anchor " << k;
+    EXPECT_EQ(a.rows[k], b.rows[k]) << "anchor " << k;
+  }
 }
 
 // Reliable outside a disk of radius 20 around p: a textureless blob.
@@ -202,9 +204,9 @@ TEST(Anchors, DepthEdgeRejectsHitsBehindItAndKeepsThoseInside) {
   Layout layout;
   layout.Fill(OutsideDisk);
   const AnchorParams params = DefaultAnchorParams(0, kDepthRange, kMaxDistance);
-  const std::vector<uint8_t> edges = VerticalEdge(kEdgeCol);
+  const test::EdgeMap edges = test::VerticalEdge(kSize, kSize, kEdgeCol);
   AnchorMaps confined_maps = layout.Maps();
-  confined_maps.edges = BoundaryView{edges.data(), kSize, kSize, kSize};
+  confined_maps.edges = edges.View();
 
   int free_hits[kMaxAnchorHits], confined_hits[kMaxAnchorHits];
   int free_sectors = 0, confined_sectors = 0;
@@ -235,12 +237,8 @@ TEST(Anchors, DepthEdgeRejectsHitsBehindItAndKeepsThoseInside) {
   // A confined search on an edge map without edges is the unconfined one.
   AnchorSet free_set, no_edges;
   ASSERT_TRUE(layout.Find(0, &free_set));
-  ASSERT_TRUE(layout.FindConfined(std::vector<uint8_t>(kSize * kSize, 0), &no_edges));
-  ASSERT_EQ(no_edges.count, free_set.count);
-  for (int k = 0; k < no_edges.count; ++k) {
-    EXPECT_EQ(no_edges.cols[k], free_set.cols[k]);
-    EXPECT_EQ(no_edges.rows[k], free_set.rows[k]);
-  }
+  ASSERT_TRUE(layout.FindConfined(test::NoEdges(kSize, kSize), &no_edges));
+  ExpectSameAnchors(no_edges, free_set);
 }
 
 // A snapped hit behind an edge is skipped, not taken: reliable pixels only on
@@ -253,7 +251,7 @@ TEST(Anchors, SnappedHitsBehindAnEdgeAreSkipped) {
   });
   constexpr int kEdgeCol = kCol + 20;
   AnchorSet confined;
-  layout.FindConfined(VerticalEdge(kEdgeCol), &confined);
+  layout.FindConfined(test::VerticalEdge(kSize, kSize, kEdgeCol), &confined);
   EXPECT_LT(confined.num_sectors, kNumSectors);
   for (int k = 0; k < confined.count; ++k) EXPECT_LT(confined.cols[k], kEdgeCol);
 }
@@ -264,11 +262,7 @@ TEST(Anchors, SameKeySameAnchors) {
   AnchorSet a, b;
   ASSERT_TRUE(layout.Find(1, &a, 42));
   ASSERT_TRUE(layout.Find(1, &b, 42));
-  ASSERT_EQ(a.count, b.count);
-  for (int k = 0; k < a.count; ++k) {
-    EXPECT_EQ(a.cols[k], b.cols[k]);
-    EXPECT_EQ(a.rows[k], b.rows[k]);
-  }
+  ExpectSameAnchors(a, b);
 }
 
 TEST(Anchors, HitsCastOnceRefitOnNewDepths) {
@@ -284,11 +278,7 @@ TEST(Anchors, HitsCastOnceRefitOnNewDepths) {
   ASSERT_TRUE(layout.Find(0, &full));
   Rng rng = MakeRng(7);
   ASSERT_TRUE(FitAnchors(layout.cam, layout.Maps(), kCol, kRow, params, hits, &rng, &refit));
-  ASSERT_EQ(refit.count, full.count);
-  for (int k = 0; k < full.count; ++k) {
-    EXPECT_EQ(refit.cols[k], full.cols[k]);
-    EXPECT_EQ(refit.rows[k], full.rows[k]);
-  }
+  ExpectSameAnchors(refit, full);
   for (float& d : layout.depth) d *= 1.1f;  // the whole surface 10 % farther
   rng = MakeRng(7);
   ASSERT_TRUE(FitAnchors(layout.cam, layout.Maps(), kCol, kRow, params, hits, &rng, &refit));
@@ -308,7 +298,7 @@ TEST(Anchors, NearestEdgeMapLeavesTheConfinedHitsAsTheyAre) {
     const uint32_t h = static_cast<uint32_t>((dx + 200) * 7919 + (dy + 200) * 104729);
     return (h * 2654435761u) >> 28 == 0;  // about one pixel in 16
   });
-  std::vector<uint8_t> edges(kSize * kSize, 0);
+  test::EdgeMap edges = test::NoEdges(kSize, kSize);
   Rng rng = MakeRng(11);
   for (int segment = 0; segment < 12; ++segment) {  // short straight edges, 2 px wide
     const int c = static_cast<int>(rng.Uniform(0.0f, kSize - 30.0f));
@@ -316,13 +306,13 @@ TEST(Anchors, NearestEdgeMapLeavesTheConfinedHitsAsTheyAre) {
     const bool vertical = rng.Uniform() < 0.5f;
     for (int k = 0; k < 30; ++k) {
       for (int w = 0; w < 2; ++w) {
-        edges[vertical ? (r + k) * kSize + c + w : (r + w) * kSize + c + k] = 1;
+        edges.bits[vertical ? (r + k) * kSize + c + w : (r + w) * kSize + c + k] = 1;
       }
     }
   }
-  const std::vector<int> nearest_edge = NearestMarkedPixels(edges.data(), kSize, kSize, 1);
+  const std::vector<int> nearest_edge = NearestMarkedPixels(edges.bits.data(), kSize, kSize, 1);
   AnchorMaps plain = layout.Maps();
-  plain.edges = BoundaryView{edges.data(), kSize, kSize, kSize};
+  plain.edges = edges.View();
   AnchorMaps shortcut = plain;
   shortcut.nearest_edge = nearest_edge.data();
   const AnchorParams params = DefaultAnchorParams(3, kDepthRange, kMaxDistance);

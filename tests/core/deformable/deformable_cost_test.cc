@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "tests/core/plane_scene.h"
+#include "tests/support/plane_scene.h"
 
 namespace msp {
 namespace core {
@@ -30,15 +30,6 @@ AnchorSet RingOfAnchors() {
   return AnchorsAt(ring, kMaxAnchors, kCol, kRow);
 }
 
-// The conventional cost of h in source view j at (col, row): its entry of ViewCosts.
-float ConventionalCost(const PassParams& p, int j, int col, int row, const PlaneHypothesis& h) {
-  RefWindow w;
-  PrepareWindow(p, col, row, &w);
-  float costs[kMaxSourceViews];
-  ViewCosts(p, w, h, nullptr, costs);
-  return costs[j];
-}
-
 // Anchor windows sum their samples in another order than the centre window
 // (or take the general form), so equal windows agree to float rounding.
 constexpr float kRounding = 1e-5f;
@@ -52,29 +43,29 @@ DeformableParams SameWindow(const PassParams& p) {
 }
 
 TEST(DeformableCost, AnchorsAtTheCentreGiveTheConventionalCost) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   const int zero[kMaxAnchors][2] = {};
   const AnchorSet a = AnchorsAt(zero, kMaxAnchors, kCol, kRow);
   for (float depth : {4.0f, 4.1f, 3.5f}) {  // a good and two wrong hypotheses
     const PlaneHypothesis h{depth, kFrontoParallel};
     EXPECT_NEAR(DeformableViewCost(s.params, 0, kCol, kRow, h, a, SameWindow(s.params)),
-                ConventionalCost(s.params, 0, kCol, kRow, h), kRounding);
+                test::ConventionalViewCost(s.params, 0, kCol, kRow, h), kRounding);
   }
 }
 
 TEST(DeformableCost, NoAnchorsIsExactlyTheConventionalCost) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   AnchorSet none{};
   const PlaneHypothesis h{4.2f, kFrontoParallel};
   EXPECT_EQ(DeformableViewCost(s.params, 0, kCol, kRow, h, none, DefaultDeformableParams()),
-            ConventionalCost(s.params, 0, kCol, kRow, h));
+            test::ConventionalViewCost(s.params, 0, kCol, kRow, h));
 }
 
 TEST(DeformableCost, GeometricTermAsInTheConventionalCost) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   // A source depth map without depth: the geometric term is its maximum.
   const std::vector<float> empty(s.src.width * s.src.height, 0.0f);
   s.params.src[0].depth = ImageView{empty.data(), s.src.width, s.src.height, s.src.width};
@@ -82,17 +73,17 @@ TEST(DeformableCost, GeometricTermAsInTheConventionalCost) {
   const int zero[kMaxAnchors][2] = {};
   const AnchorSet a = AnchorsAt(zero, kMaxAnchors, kCol, kRow);
   const PlaneHypothesis h{4.0f, kFrontoParallel};
-  const float conventional = ConventionalCost(s.params, 0, kCol, kRow, h);
+  const float conventional = test::ConventionalViewCost(s.params, 0, kCol, kRow, h);
   EXPECT_NEAR(DeformableViewCost(s.params, 0, kCol, kRow, h, a, SameWindow(s.params)), conventional,
               kRounding);
   s.params.geometric = 0;
-  EXPECT_NEAR(conventional - ConventionalCost(s.params, 0, kCol, kRow, h),
+  EXPECT_NEAR(conventional - test::ConventionalViewCost(s.params, 0, kCol, kRow, h),
               s.params.geom_lambda * s.params.geom_max_error, 1e-5f);
 }
 
 TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   const AnchorSet a = RingOfAnchors();
   const DeformableParams d = DefaultDeformableParams();
   const PlaneHypothesis truth{4.0f, kFrontoParallel};
@@ -107,7 +98,7 @@ TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
   DeformableViewCosts(s.params, windows, truth, d, weights, costs, conventional);
   EXPECT_EQ(costs[0], DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d));
   // The conventional cost comes out on the way, equal to ViewCosts'.
-  EXPECT_EQ(conventional[0], ConventionalCost(s.params, 0, kCol, kRow, truth));
+  EXPECT_EQ(conventional[0], test::ConventionalViewCost(s.params, 0, kCol, kRow, truth));
   const float skip[1] = {0.0f};
   DeformableViewCosts(s.params, windows, truth, d, skip, costs, conventional);
   EXPECT_EQ(costs[0], kMaxCost);
@@ -118,8 +109,8 @@ TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
 // limit is above it, otherwise a figure between the limit and the exact
 // cost; two views so that a sum can stop half way.
 TEST(DeformableCost, BoundedAggregateStopsOnlyAtItsLimit) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   s.params.src[1] = s.params.src[0];
   s.params.num_src = 2;
   const DeformableParams d = DefaultDeformableParams();
@@ -156,8 +147,8 @@ TEST(DeformableCost, BoundedAggregateStopsOnlyAtItsLimit) {
 // by row, what DeformableViewCosts gives each alone; a row without a
 // candidate costs kMaxCost.
 TEST(DeformableCost, CandidateRowsCostWhatEachCandidateCostsAlone) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   const AnchorSet a = RingOfAnchors();
   const DeformableParams d = DefaultDeformableParams();
   DeformableWindows windows;
@@ -192,19 +183,19 @@ TEST(DeformableCost, CandidateRowsCostWhatEachCandidateCostsAlone) {
 TEST(DeformableCost, TexturedAnchorsRescueATexturelessCentre) {
   // The reference is flat inside a disk of radius 12 around p: the centre
   // window alone has no signal (cost 2), the anchors outside still match.
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   for (int r = kRow - 12; r <= kRow + 12; ++r) {
     for (int c = kCol - 12; c <= kCol + 12; ++c) {
       if ((c - kCol) * (c - kCol) + (r - kRow) * (r - kRow) <= 144) {
-        s.ref_image[r * s.ref.width + c] = 0.5f;
+        s.ref_image.At(c, r) = 0.5f;
       }
     }
   }
   const AnchorSet a = RingOfAnchors();
   const PlaneHypothesis truth{4.0f, kFrontoParallel};
   const PlaneHypothesis wrong{4.4f, kFrontoParallel};
-  EXPECT_EQ(ConventionalCost(s.params, 0, kCol, kRow, truth), kMaxCost);
+  EXPECT_EQ(test::ConventionalViewCost(s.params, 0, kCol, kRow, truth), kMaxCost);
   const DeformableParams d = DefaultDeformableParams();
   const float good = DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d);
   EXPECT_NEAR(good, d.lambda * kMaxCost, 0.05f);  // only the centre term is lost
@@ -212,8 +203,8 @@ TEST(DeformableCost, TexturedAnchorsRescueATexturelessCentre) {
 }
 
 TEST(DeformableCost, AViewThatDoesNotSeeThePixelCostsTheMaximum) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   const PlaneHypothesis truth{4.0f, kFrontoParallel};
   const Mat3 H = WarpHomography(s.params.src[0].rel, PreparePlane(s.params, 0, 0, truth).warp);
   const ImageView& src = s.params.src[0].image;

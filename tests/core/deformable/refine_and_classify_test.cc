@@ -5,36 +5,23 @@
 #include <initializer_list>
 #include <vector>
 
-#include "tests/core/plane_scene.h"
+#include "tests/support/plane_scene.h"
 
 namespace msp {
 namespace core {
 namespace {
 
-// The source camera's depth of the scene plane at every source pixel.
-std::vector<float> SourceDepth(const testing_scene::PlaneScene& s) {
-  std::vector<float> depth(static_cast<size_t>(s.src.width) * s.src.height);
-  for (int r = 0; r < s.src.height; ++r) {
-    for (int c = 0; c < s.src.width; ++c) {
-      const Vec3 dir = MulTransposed(s.src.R, ViewRay(s.src, c, r));
-      const Vec3 X = s.src.center + ((s.depth - s.src.center.z) / dir.z) * dir;
-      depth[r * s.src.width + c] = WorldToCam(s.src, X).z;
-    }
-  }
-  return depth;
-}
-
 // The scene in a geometric pass: the source's depth map is the truth.
-void MakeGeometricScene(testing_scene::PlaneScene* s, std::vector<float>* src_depth) {
-  testing_scene::MakeScene(4.0f, true, s);
-  *src_depth = SourceDepth(*s);
+void MakeGeometricScene(test::PlaneScene* s, std::vector<float>* src_depth) {
+  test::MakeScene(4.0f, true, s);
+  *src_depth = test::PlaneDepthMap(s->src, s->depth);
   s->params.geometric = 1;
   s->params.src[0].depth = ImageView{src_depth->data(), s->src.width, s->src.height, s->src.width};
 }
 
 // Off the true depth by up to 9 % (a few pixels of disparity), pixel by
 // pixel, so the refinement has somewhere to go.
-void PerturbDepths(testing_scene::PlaneScene* s) {
+void PerturbDepths(test::PlaneScene* s) {
   for (size_t i = 0; i < s->state_depth.size(); ++i) {
     s->state_depth[i] *= 1.0f + 0.03f * static_cast<float>(static_cast<int>(i * 37 % 7) - 3);
   }
@@ -42,9 +29,9 @@ void PerturbDepths(testing_scene::PlaneScene* s) {
 
 // LocalRefineAndClassifyPixel on every pixel of a grid against
 // LocalRefinePixel followed by ClassifyPixel on a copy of the state.
-void ExpectSameAsSeparateSteps(testing_scene::PlaneScene* s, int pass, int* num_moved) {
+void ExpectSameAsSeparateSteps(test::PlaneScene* s, int pass, int* num_moved) {
   const ReliabilityParams rp = DefaultReliabilityParams(pass);
-  const testing_scene::PlaneScene before = *s;
+  const test::PlaneScene before = *s;
   std::vector<float> depth = s->state_depth, normal = s->state_normal, cost = s->state_cost;
   std::vector<uint32_t> mask = s->state_mask;
   PassParams separate = s->params;
@@ -66,8 +53,8 @@ void ExpectSameAsSeparateSteps(testing_scene::PlaneScene* s, int pass, int* num_
 
 TEST(RefineAndClassify, PhotometricMatchesTheSeparateSteps) {
   for (bool textured : {true, false}) {
-    testing_scene::PlaneScene s;
-    testing_scene::MakeScene(4.0f, textured, &s);
+    test::PlaneScene s;
+    test::MakeScene(4.0f, textured, &s);
     PerturbDepths(&s);
     int moved = 0;
     ExpectSameAsSeparateSteps(&s, 0, &moved);
@@ -78,7 +65,7 @@ TEST(RefineAndClassify, PhotometricMatchesTheSeparateSteps) {
 }
 
 TEST(RefineAndClassify, GeometricMatchesTheSeparateSteps) {
-  testing_scene::PlaneScene s;
+  test::PlaneScene s;
   std::vector<float> src_depth;
   MakeGeometricScene(&s, &src_depth);
   PerturbDepths(&s);
@@ -91,8 +78,7 @@ TEST(RefineAndClassify, GeometricMatchesTheSeparateSteps) {
 // scored in two views (so that a sum can stop half way): check(w, h,
 // weights, exact cost) for each.
 template <typename Check>
-void ForGridHypotheses(testing_scene::PlaneScene* s, std::initializer_list<float> offs,
-                       Check check) {
+void ForGridHypotheses(test::PlaneScene* s, std::initializer_list<float> offs, Check check) {
   s->params.src[1] = s->params.src[0];
   s->params.num_src = 2;
   const float weights[kMaxSourceViews] = {1.0f, 0.5f};
@@ -114,8 +100,8 @@ void ForGridHypotheses(testing_scene::PlaneScene* s, std::initializer_list<float
 // without a limit, and under a limit either exact or a partial figure
 // between the limit and the exact cost.
 TEST(RefineAndClassify, BoundedCostStopsOnlyAtItsLimit) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   int stopped = 0;
   ForGridHypotheses(
       &s, {1.0f, 1.03f, 1.09f},
@@ -137,7 +123,7 @@ TEST(RefineAndClassify, BoundedCostStopsOnlyAtItsLimit) {
 // term reaches the limit stops at that figure, and one below the limit
 // still gets its exact cost.
 TEST(RefineAndClassify, GeometricTermsBoundTheCostFirst) {
-  testing_scene::PlaneScene s;
+  test::PlaneScene s;
   std::vector<float> src_depth;
   MakeGeometricScene(&s, &src_depth);
   int bounded_by_geometry = 0;
@@ -156,8 +142,8 @@ TEST(RefineAndClassify, GeometricTermsBoundTheCostFirst) {
 }
 
 TEST(RefineAndClassify, UnknownPixelsAreRefinedAsUsual) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   PerturbDepths(&s);
   // Without a selected view the refinement uses every view and the class is unknown.
   for (size_t i = 0; i < s.state_mask.size(); i += 3) s.state_mask[i] = 0u;

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "tests/core/plane_scene.h"
+#include "tests/support/plane_scene.h"
 
 namespace msp {
 namespace core {
@@ -80,8 +80,8 @@ TEST(Reliability, ThresholdsAreParameters) {
 }
 
 TEST(Reliability, TexturedPlaneAtItsTrueDepthIsReliable) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   float curve[kCurveSamples];
   ASSERT_TRUE(SampleCostCurve(s.params, 100, 75, curve));
   EXPECT_LT(curve[kCentre], 0.05f);
@@ -92,8 +92,8 @@ TEST(Reliability, TexturedPlaneAtItsTrueDepthIsReliable) {
 // The sampler scores its samples in blocks (one vector lane each): every
 // sample costs what the view-weighted cost of its plane alone gives.
 TEST(Reliability, BlockScoredCurveEqualsEachSampleAlone) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   for (const int col : {100, 60}) {
     CostCurveSampler sampler;
     ASSERT_TRUE(sampler.Prepare(s.params, col, 75));
@@ -121,14 +121,14 @@ TEST(Reliability, BlockScoredCurveEqualsEachSampleAlone) {
 }
 
 TEST(Reliability, TexturelessPlaneIsUnreliable) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, false, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, false, &s);
   EXPECT_EQ(ClassifyPixel(s.params, 100, 75, DefaultReliabilityParams(0)), kUnreliable);
 }
 
 TEST(Reliability, BorderNoDepthOrNoViewIsUnknown) {
-  testing_scene::PlaneScene s;
-  testing_scene::MakeScene(4.0f, true, &s);
+  test::PlaneScene s;
+  test::MakeScene(4.0f, true, &s);
   const ReliabilityParams rp = DefaultReliabilityParams(0);
   EXPECT_EQ(ClassifyPixel(s.params, 2, 75, rp), kUnknown);  // window over the border
   EXPECT_EQ(ClassifyPixel(s.params, 100, 147, rp), kUnknown);

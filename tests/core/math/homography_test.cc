@@ -3,18 +3,18 @@
 #include <gtest/gtest.h>
 
 #include "core/math/plane.h"
-#include "tests/core/test_cameras.h"
+#include "tests/support/cameras.h"
 
 namespace msp {
 namespace core {
 namespace {
 
-using testing_cameras::Reference;
-using testing_cameras::Source;
+using test::ReferenceCamera;
+using test::SourceCamera;
 
 // The reference mapped onto itself by any plane is the identity.
 TEST(Homography, SameCameraIsIdentity) {
-  const Camera ref = Reference();
+  const Camera ref = ReferenceCamera();
   const RelativePose rel = ComputeRelativePose(ref, ref);
   const Mat3 H = ComputeHomography(ref, rel, Normalized(Vec3{0.2f, 0.1f, -1.0f}), 3.0f);
   const float scale = H.m[8];
@@ -23,7 +23,7 @@ TEST(Homography, SameCameraIsIdentity) {
 
 // A pixel of a plane maps exactly where its 3D point projects in the source.
 TEST(Homography, MapsPlanePointsToTheirProjections) {
-  const Camera ref = Reference(), src = Source();
+  const Camera ref = ReferenceCamera(), src = SourceCamera();
   const RelativePose rel = ComputeRelativePose(ref, src);
   const PlaneHypothesis h{2.5f, Normalized(Vec3{0.3f, -0.2f, -1.0f})};
   const float dist = PlaneDistance(ref, 90, 70, h);
@@ -42,7 +42,7 @@ TEST(Homography, MapsPlanePointsToTheirProjections) {
 }
 
 TEST(Homography, RelativePoseMapsReferenceToSourceFrame) {
-  const Camera ref = Reference(), src = Source();
+  const Camera ref = ReferenceCamera(), src = SourceCamera();
   const RelativePose rel = ComputeRelativePose(ref, src);
   const Vec3 X_world{0.3f, -0.4f, 2.0f};
   const Vec3 expected = WorldToCam(src, X_world);

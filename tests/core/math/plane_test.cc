@@ -2,14 +2,14 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/core/test_cameras.h"
+#include "tests/support/cameras.h"
 
 namespace msp {
 namespace core {
 namespace {
 
 TEST(Plane, PropagatedDepthStaysOnThePlane) {
-  const Camera cam = testing_cameras::Reference();
+  const Camera cam = test::ReferenceCamera();
   const PlaneHypothesis h{2.0f, Normalized(Vec3{0.2f, 0.3f, -1.0f})};
   const float d = PropagatedDepth(cam, 50, 60, h, 80, 20);
   const Vec3 p = BackProject(cam, 50, 60, 2.0f);
@@ -18,13 +18,13 @@ TEST(Plane, PropagatedDepthStaysOnThePlane) {
 }
 
 TEST(Plane, FrontoParallelPlaneKeepsDepth) {
-  const Camera cam = testing_cameras::Reference();
+  const Camera cam = test::ReferenceCamera();
   const PlaneHypothesis h{2.0f, Vec3{0.0f, 0.0f, -1.0f}};
   EXPECT_NEAR(PropagatedDepth(cam, 10, 10, h, 190, 140), 2.0f, 1e-6f);
 }
 
 TEST(Plane, RandomAndPerturbedNormalsAreUnitAndFaceTheCamera) {
-  const Camera cam = testing_cameras::Reference();
+  const Camera cam = test::ReferenceCamera();
   Rng rng = MakeRng(3);
   for (int i = 0; i < 1000; ++i) {
     const int col = i % 200, row = (i * 7) % 150;
@@ -39,7 +39,7 @@ TEST(Plane, RandomAndPerturbedNormalsAreUnitAndFaceTheCamera) {
 }
 
 TEST(Plane, RandomHypothesisDepthInRange) {
-  const Camera cam = testing_cameras::Reference();
+  const Camera cam = test::ReferenceCamera();
   Rng rng = MakeRng(5);
   for (int i = 0; i < 200; ++i) {
     const PlaneHypothesis h = RandomHypothesis(cam, 3, 4, 1.5f, 2.5f, &rng);

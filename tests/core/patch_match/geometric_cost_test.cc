@@ -5,32 +5,21 @@
 #include <vector>
 
 #include "core/math/homography.h"
-#include "tests/core/test_cameras.h"
+#include "tests/support/cameras.h"
 
 namespace msp {
 namespace core {
 namespace {
 
-using testing_cameras::Reference;
-using testing_cameras::Source;
+using test::ReferenceCamera;
+using test::SourceCamera;
 
-// Source depth map of the world plane z = 3 (reference frame = world frame).
-std::vector<float> SourcePlaneDepth(const Camera& src) {
-  std::vector<float> depth(src.width * src.height, 0.0f);
-  for (int r = 0; r < src.height; ++r) {
-    for (int c = 0; c < src.width; ++c) {
-      // Ray from the source centre through (c, r), intersected with z = 3.
-      const Vec3 dir = MulTransposed(src.R, ViewRay(src, c, r));
-      const float s = (3.0f - src.center.z) / dir.z;
-      depth[r * src.width + c] = WorldToCam(src, src.center + s * dir).z;
-    }
-  }
-  return depth;
-}
+// The source depth maps are of the world plane z = 3 (reference frame = world frame).
+constexpr float kPlaneZ = 3.0f;
 
 TEST(GeometricCost, ConsistentDepthReprojectsOntoItself) {
-  const Camera ref = Reference(), src = Source();
-  const std::vector<float> depth = SourcePlaneDepth(src);
+  const Camera ref = ReferenceCamera(), src = SourceCamera();
+  const std::vector<float> depth = test::PlaneDepthMap(src, kPlaneZ);
   const ImageView view{depth.data(), src.width, src.height, src.width};
   // Reference depth of the plane z = 3 is 3 everywhere (R = I, C = 0). The
   // source depth is sampled at the nearest pixel: sub-pixel error remains.
@@ -39,8 +28,8 @@ TEST(GeometricCost, ConsistentDepthReprojectsOntoItself) {
 }
 
 TEST(GeometricCost, InconsistentDepthIsPenalisedAndClamped) {
-  const Camera ref = Reference(), src = Source();
-  const std::vector<float> depth = SourcePlaneDepth(src);
+  const Camera ref = ReferenceCamera(), src = SourceCamera();
+  const std::vector<float> depth = test::PlaneDepthMap(src, kPlaneZ);
   const ImageView view{depth.data(), src.width, src.height, src.width};
   const float e = ReprojectionError(ref, src, view, 100, 75, 3.3f, 100.0f);
   EXPECT_GT(e, 1.0f);
@@ -53,9 +42,9 @@ TEST(GeometricCost, InconsistentDepthIsPenalisedAndClamped) {
 // The composed maps give ReprojectionError's answer: consistent, penalised,
 // clamped, off the source, and on a depth map of half the resolution.
 TEST(GeometricCost, ComposedMapsGiveTheSameError) {
-  const Camera ref = Reference(), src = Source();
+  const Camera ref = ReferenceCamera(), src = SourceCamera();
   const RelativePose rel = ComputeRelativePose(ref, src);
-  const std::vector<float> depth = SourcePlaneDepth(src);
+  const std::vector<float> depth = test::PlaneDepthMap(src, kPlaneZ);
   const ImageView full{depth.data(), src.width, src.height, src.width};
   std::vector<float> half(static_cast<size_t>(src.width / 2) * (src.height / 2));
   for (int r = 0; r < src.height / 2; ++r) {
@@ -86,9 +75,9 @@ TEST(GeometricCost, ComposedMapsGiveTheSameError) {
 // the map, clamped, at another resolution, and in front of and behind the
 // source camera.
 TEST(GeometricCost, LanesGiveTheScalarError) {
-  const Camera ref = Reference(), src = Source();
+  const Camera ref = ReferenceCamera(), src = SourceCamera();
   const RelativePose rel = ComputeRelativePose(ref, src);
-  const std::vector<float> depth = SourcePlaneDepth(src);
+  const std::vector<float> depth = test::PlaneDepthMap(src, kPlaneZ);
   std::vector<float> holed = depth;
   for (size_t i = 0; i < holed.size(); i += 3) holed[i] = 0.0f;  // no depth there
   const ImageView full{holed.data(), src.width, src.height, src.width};

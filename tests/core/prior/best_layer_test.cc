@@ -5,6 +5,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "tests/support/images.h"
+#include "tests/support/prior_anchors.h"
+
 namespace msp {
 namespace core {
 namespace {
@@ -17,18 +20,9 @@ constexpr uint64_t kKey = 1234;
 // a depth edge at column 10), so only anchors left of the edge are inliers
 // of the right plane.
 PriorAnchors MakeAnchors(const std::vector<int>& cols, const std::vector<int>& rows) {
-  PriorAnchors a{};
-  a.col = 10;
-  a.row = 10;
-  a.count = static_cast<int>(cols.size());
-  for (int i = 0; i < a.count; ++i) {
-    a.cols[i] = cols[i];
-    a.rows[i] = rows[i];
-    const float x = 0.1f * cols[i];
-    const float y = 0.1f * rows[i];
-    a.points[i] = cols[i] < 10 ? Vec3{x, y, 2.0f} : Vec3{x, y, 5.0f + 0.3f * x + 0.7f * y * y};
-  }
-  return a;
+  return test::AnchorsAcrossDepthEdge(10, 10, cols, rows, /*edge_col=*/10, [](float x, float y) {
+    return 5.0f + 0.3f * x + 0.7f * y * y;
+  });
 }
 
 TEST(BestLayer, PlaneInliersOfPointsOnAPlaneWithOutliers) {
@@ -72,15 +66,15 @@ TEST(BestLayer, LayerWhoseBoundaryFollowsTheDepthEdgeIsChosen) {
   // Layer 0: no boundary. Layer 1: boundary on the depth edge (columns 10-11,
   // p at column 10 sits on it). Layer 2: a wrong boundary at rows 6-7 that
   // cuts p's own surface in half.
-  std::vector<uint8_t> none(kSize * kSize, 0), right(kSize * kSize, 0), wrong(kSize * kSize, 0);
-  for (int i = 0; i < kSize; ++i) {
-    right[i * kSize + 10] = right[i * kSize + 11] = 1;
-    wrong[6 * kSize + i] = wrong[7 * kSize + i] = 1;
-  }
+  const test::EdgeMap none = test::NoEdges(kSize, kSize);
+  const test::EdgeMap right = test::VerticalEdge(kSize, kSize, 10);
+  test::EdgeMap wrong = test::NoEdges(kSize, kSize);
+  for (int i = 0; i < kSize; ++i) wrong.bits[6 * kSize + i] = wrong.bits[7 * kSize + i] = 1;
   // p is at (10, 10) on the edge pixel of its own (left) region.
   PriorAnchors a = MakeAnchors({2, 4, 6, 8, 3, 5, 14, 16, 18}, {2, 4, 6, 8, 15, 12, 3, 9, 15});
   std::vector<uint32_t> packed(kSize * kSize);
-  for (int i = 0; i < kSize * kSize; ++i) packed[i] = none[i] | right[i] << 1 | wrong[i] << 2;
+  for (int i = 0; i < kSize * kSize; ++i)
+    packed[i] = none.bits[i] | right.bits[i] << 1 | wrong.bits[i] << 2;
   const LayerBoundaryView views{packed.data(), kSize, kSize, kSize};
   EXPECT_EQ(BestLayersForPixel(a, views, 3, kRansac, MakeRng(kKey)), 0b010u);
 }

@@ -5,88 +5,81 @@
 #include <cstdint>
 #include <vector>
 
+#include "tests/support/images.h"
+
 namespace msp {
 namespace core {
 namespace {
 
 constexpr int kSize = 16;
 
-// A kSize x kSize boundary image with a vertical edge (two pixels thick, as
-// ComputeBoundaryMap marks both sides) at columns `col` and `col + 1`.
-std::vector<uint8_t> VerticalEdge(int col) {
-  std::vector<uint8_t> b(kSize * kSize, 0);
-  for (int row = 0; row < kSize; ++row) b[row * kSize + col] = b[row * kSize + col + 1] = 1;
-  return b;
-}
-
-BoundaryView View(const std::vector<uint8_t>& b) {
-  return BoundaryView{b.data(), kSize, kSize, kSize};
-}
+using test::EdgeMap;
 
 TEST(SegmentCrossing, AnchorBehindEdgeIsRejectedAnchorInsideIsKept) {
-  const std::vector<uint8_t> b = VerticalEdge(8);
-  EXPECT_TRUE(SegmentCrossesBoundary(View(b), 4, 5, 12, 5));   // across the edge
-  EXPECT_TRUE(SegmentCrossesBoundary(View(b), 4, 2, 12, 13));  // diagonally across
-  EXPECT_FALSE(SegmentCrossesBoundary(View(b), 4, 5, 0, 5));   // same side
-  EXPECT_FALSE(SegmentCrossesBoundary(View(b), 4, 5, 7, 15));  // same side, steep line
-  EXPECT_FALSE(SegmentCrossesBoundary(View(b), 12, 0, 15, 15));
+  const EdgeMap b = test::VerticalEdge(kSize, kSize, 8);
+  EXPECT_TRUE(SegmentCrossesBoundary(b.View(), 4, 5, 12, 5));   // across the edge
+  EXPECT_TRUE(SegmentCrossesBoundary(b.View(), 4, 2, 12, 13));  // diagonally across
+  EXPECT_FALSE(SegmentCrossesBoundary(b.View(), 4, 5, 0, 5));   // same side
+  EXPECT_FALSE(SegmentCrossesBoundary(b.View(), 4, 5, 7, 15));  // same side, steep line
+  EXPECT_FALSE(SegmentCrossesBoundary(b.View(), 12, 0, 15, 15));
 }
 
 TEST(SegmentCrossing, CentreOnEdgeIsNotTestedAnchorOnEdgeIs) {
-  const std::vector<uint8_t> b = VerticalEdge(8);
-  EXPECT_FALSE(SegmentCrossesBoundary(View(b), 8, 5, 4, 5));  // p on the edge, leaving it inward
-  EXPECT_TRUE(SegmentCrossesBoundary(View(b), 4, 5, 8, 5));   // anchor on the edge
-  EXPECT_FALSE(SegmentCrossesBoundary(View(b), 4, 5, 4, 5));  // s == p
+  const EdgeMap b = test::VerticalEdge(kSize, kSize, 8);
+  EXPECT_FALSE(SegmentCrossesBoundary(b.View(), 8, 5, 4, 5));  // p on the edge, leaving it inward
+  EXPECT_TRUE(SegmentCrossesBoundary(b.View(), 4, 5, 8, 5));   // anchor on the edge
+  EXPECT_FALSE(SegmentCrossesBoundary(b.View(), 4, 5, 4, 5));  // s == p
 }
 
 TEST(SegmentCrossing, DiagonalLineCannotSlipThroughAThinDiagonalEdge) {
   // An anti-diagonal one-pixel edge: 8-connected, like a line drawn by Bresenham.
-  std::vector<uint8_t> b(kSize * kSize, 0);
-  for (int i = 0; i < kSize; ++i) b[i * kSize + (kSize - 1 - i)] = 1;
+  EdgeMap b = test::NoEdges(kSize, kSize);
+  for (int i = 0; i < kSize; ++i) b.bits[i * kSize + (kSize - 1 - i)] = 1;
   // The main diagonal meets the anti-diagonal between pixels for an even size;
   // a Bresenham step moves in both axes at once and could jump over it, so the
   // two-pixel-thick edges of ComputeBoundaryMap are what confinement relies on.
-  std::vector<uint8_t> thick = b;
-  for (int i = 0; i + 1 < kSize; ++i) thick[i * kSize + (kSize - 2 - i)] = 1;
-  EXPECT_TRUE(SegmentCrossesBoundary(View(thick), 0, 0, 15, 15));
+  EdgeMap thick = b;
+  for (int i = 0; i + 1 < kSize; ++i) thick.bits[i * kSize + (kSize - 2 - i)] = 1;
+  EXPECT_TRUE(SegmentCrossesBoundary(thick.View(), 0, 0, 15, 15));
 }
 
 TEST(SegmentCrossing, OutsideTheImageCountsAsBoundary) {
-  const std::vector<uint8_t> b(kSize * kSize, 0);
-  EXPECT_TRUE(SegmentCrossesBoundary(View(b), 4, 4, kSize, 4));
-  EXPECT_FALSE(SegmentCrossesBoundary(View(b), 4, 4, kSize - 1, 4));
+  const EdgeMap b = test::NoEdges(kSize, kSize);
+  EXPECT_TRUE(SegmentCrossesBoundary(b.View(), 4, 4, kSize, 4));
+  EXPECT_FALSE(SegmentCrossesBoundary(b.View(), 4, 4, kSize - 1, 4));
 }
 
 TEST(SegmentCrossing, AdmissibleAnchorsIsABitSet) {
-  const std::vector<uint8_t> b = VerticalEdge(8);
+  const EdgeMap b = test::VerticalEdge(kSize, kSize, 8);
   const int cols[4] = {0, 12, 6, 15};
   const int rows[4] = {0, 5, 10, 15};
-  EXPECT_EQ(AdmissibleAnchors(View(b), 4, 5, cols, rows, 4), 0b0101u);
-  EXPECT_EQ(AdmissibleAnchors(View(b), 12, 5, cols, rows, 4), 0b1010u);
-  EXPECT_EQ(AdmissibleAnchors(View(b), 4, 5, cols, rows, 0), 0u);
+  EXPECT_EQ(AdmissibleAnchors(b.View(), 4, 5, cols, rows, 4), 0b0101u);
+  EXPECT_EQ(AdmissibleAnchors(b.View(), 12, 5, cols, rows, 4), 0b1010u);
+  EXPECT_EQ(AdmissibleAnchors(b.View(), 4, 5, cols, rows, 0), 0u);
 }
 
 TEST(SegmentCrossing, OneWalkPerAnchorEqualsOneWalkPerLayer) {
   // Three layers: a vertical edge, a horizontal edge, none.
-  const std::vector<uint8_t> vertical = VerticalEdge(8);
-  std::vector<uint8_t> horizontal(kSize * kSize, 0), none(kSize * kSize, 0);
-  for (int col = 0; col < kSize; ++col) horizontal[5 * kSize + col] = 1;
+  const EdgeMap vertical = test::VerticalEdge(kSize, kSize, 8);
+  EdgeMap horizontal = test::NoEdges(kSize, kSize);
+  const EdgeMap none = test::NoEdges(kSize, kSize);
+  for (int col = 0; col < kSize; ++col) horizontal.bits[5 * kSize + col] = 1;
   std::vector<uint32_t> packed(kSize * kSize);
-  for (int i = 0; i < kSize * kSize; ++i) packed[i] = vertical[i] | horizontal[i] << 1;
+  for (int i = 0; i < kSize * kSize; ++i) packed[i] = vertical.bits[i] | horizontal.bits[i] << 1;
   const LayerBoundaryView layers{packed.data(), kSize, kSize, kSize};
   int cols[kMaxPriorAnchors], rows[kMaxPriorAnchors];
   for (int i = 0; i < kMaxPriorAnchors; ++i) {
     cols[i] = (i * 7) % kSize;
     rows[i] = (i * 11 + 3) % kSize;
   }
-  const std::vector<uint8_t>* maps[3] = {&vertical, &horizontal, &none};
+  const EdgeMap* maps[3] = {&vertical, &horizontal, &none};
   for (int p_row = 0; p_row < kSize; p_row += 3) {
     for (int p_col = 0; p_col < kSize; p_col += 2) {
       uint32_t subsets[3];
       AdmissibleAnchorsPerLayer(layers, 3, p_col, p_row, cols, rows, kMaxPriorAnchors, subsets);
       for (int n = 0; n < 3; ++n) {
         EXPECT_EQ(subsets[n],
-                  AdmissibleAnchors(View(*maps[n]), p_col, p_row, cols, rows, kMaxPriorAnchors))
+                  AdmissibleAnchors(maps[n]->View(), p_col, p_row, cols, rows, kMaxPriorAnchors))
             << "layer " << n << " p " << p_col << "," << p_row;
       }
     }

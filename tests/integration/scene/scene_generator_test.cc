@@ -1,13 +1,15 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <map>
+#include <string>
 
 #include "colmap_ext/dense_map_io.h"
 #include "colmap_ext/errors.h"
 #include "colmap_ext/sparse_model.h"
 #include "integration/scene/generate.h"
+#include "tests/support/files.h"
+#include "tests/support/temp_dir.h"
 #include "tools/evaluate_ground_truth.h"
 
 namespace msp {
@@ -16,11 +18,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Small images keep the test fast; the rig and the scene are the same.
+using test::ReadRaw;
+
+// Small images keep the test fast; the rig and the scene are the same. The
+// scene goes to `dir` (a folder of a test::TempDir).
 GeneratorOptions SmallScene(const std::string& dir, uint64_t seed) {
   GeneratorOptions options;
-  options.output = testing::TempDir() + "/" + dir;
-  fs::remove_all(options.output);
+  options.output = dir;
   options.seed = seed;
   options.rig.width = 160;
   options.rig.height = 120;
@@ -28,27 +32,21 @@ GeneratorOptions SmallScene(const std::string& dir, uint64_t seed) {
   return options;
 }
 
-std::string ReadBytes(const fs::path& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
 // Relative path -> bytes of every file under dir.
 std::map<std::string, std::string> Snapshot(const std::string& dir) {
   std::map<std::string, std::string> files;
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {
     if (entry.is_regular_file()) {
-      files[fs::relative(entry.path(), dir).string()] = ReadBytes(entry.path());
+      files[fs::relative(entry.path(), dir).string()] = ReadRaw(entry.path().string());
     }
   }
   return files;
 }
 
 TEST(SceneGenerator, SameSeedGivesIdenticalBytes) {
-  const GeneratorOptions a = SmallScene("gen_a", 7);
-  const GeneratorOptions b = SmallScene("gen_b", 7);
+  const test::TempDir dir;
+  const GeneratorOptions a = SmallScene(dir / "gen_a", 7);
+  const GeneratorOptions b = SmallScene(dir / "gen_b", 7);
   GenerateScene(a);
   GenerateScene(b);
   const auto files_a = Snapshot(a.output);
@@ -59,14 +57,14 @@ TEST(SceneGenerator, SameSeedGivesIdenticalBytes) {
     ASSERT_TRUE(files_b.count(path)) << path;
     EXPECT_TRUE(bytes == files_b.at(path)) << path << " differs";
   }
-  const GeneratorOptions c = SmallScene("gen_c", 8);
+  const GeneratorOptions c = SmallScene(dir / "gen_c", 8);
   GenerateScene(c);
-  EXPECT_NE(ReadBytes(fs::path(a.output) / "images/img_000.png"),
-            ReadBytes(fs::path(c.output) / "images/img_000.png"));
+  EXPECT_NE(ReadRaw(a.output + "/images/img_000.png"), ReadRaw(c.output + "/images/img_000.png"));
 }
 
 TEST(SceneGenerator, WritesACompleteWorkspaceWithRealTracks) {
-  const GeneratorOptions options = SmallScene("gen_ws", 1);
+  const test::TempDir dir;
+  const GeneratorOptions options = SmallScene(dir.path(), 1);
   const GeneratorSummary summary = GenerateScene(options);
   const fs::path ws(options.output);
   for (const char* f :
@@ -77,7 +75,8 @@ TEST(SceneGenerator, WritesACompleteWorkspaceWithRealTracks) {
         "ground_truth/textureless/img_004.png.png"}) {
     EXPECT_TRUE(fs::exists(ws / f)) << f;
   }
-  EXPECT_EQ(ReadBytes(ws / "stereo/patch-match.cfg").substr(0, 25), "img_000.png\n__auto__, 20\n");
+  EXPECT_EQ(ReadRaw((ws / "stereo/patch-match.cfg").string()).substr(0, 25),
+            "img_000.png\n__auto__, 20\n");
 
   const SparseModel model = ReadSparseModel((ws / "sparse").string());
   ASSERT_EQ(model.images.size(), 5u);
@@ -106,7 +105,8 @@ TEST(SceneGenerator, WritesACompleteWorkspaceWithRealTracks) {
 }
 
 TEST(SceneGenerator, RejectsBadOptions) {
-  GeneratorOptions options = SmallScene("gen_bad", 1);
+  const test::TempDir dir;
+  GeneratorOptions options = SmallScene(dir.path(), 1);
   options.rig.num_cameras = 1;
   EXPECT_ANY_THROW(GenerateScene(options));
   options.rig.num_cameras = 5;

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "tests/core/plane_scene.h"
+#include "tests/support/plane_scene.h"
 
 namespace msp {
 namespace {
@@ -29,13 +29,13 @@ TEST(AnchorPairCache, HoldsWhatWasStoredUntilCleared) {
 // A textured plane seen by one source; the iteration's plane snapshot gives
 // each anchor a plane of its own, so the anchors' candidates differ.
 struct Fixture {
-  core::testing_scene::PlaneScene s;
+  test::PlaneScene s;
   std::vector<float> depth, normal;
   core::PlaneMapView planes;
   core::DeformableParams d = core::DefaultDeformableParams();
 
   Fixture() {
-    core::testing_scene::MakeScene(4.0f, true, &s);
+    test::MakeScene(4.0f, true, &s);
     depth = s.state_depth;
     normal = s.state_normal;
     const int n = s.ref.width * s.ref.height;
@@ -131,7 +131,7 @@ TEST(CachedAnchorSums, DeformableUpdateAsWithDirectSums) {
   const int i = row * f.s.ref.width + col;
   f.s.state_depth[i] = 3.6f;  // a wrong start: the anchors' planes must win
   f.s.state_cost[i] = core::kMaxCost;
-  core::testing_scene::PlaneScene& s = f.s;
+  test::PlaneScene& s = f.s;
   const std::vector<float> start_depth = s.state_depth, start_normal = s.state_normal;
   core::DeformableUpdatePixel(s.params, col, row, 0, anchors, f.planes, f.d);
   const float direct_depth = s.state_depth[i], direct_cost = s.state_cost[i];

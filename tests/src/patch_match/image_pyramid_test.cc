@@ -3,23 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "core/math/plane.h"
+#include "tests/support/cameras.h"
 
 namespace msp {
 namespace {
-
-core::Camera TestCamera(int w, int h) {
-  core::Camera cam{};
-  cam.width = w;
-  cam.height = h;
-  cam.fx = 100.0f;
-  cam.fy = 110.0f;
-  cam.cx = w * 0.5f;
-  cam.cy = h * 0.5f;
-  cam.R = core::Mat3{{1, 0, 0, 0, 1, 0, 0, 0, 1}};
-  cam.t = core::Vec3{0, 0, 0};
-  cam.center = core::Vec3{0, 0, 0};
-  return cam;
-}
 
 TEST(ImagePyramid, NumHalvings) {
   EXPECT_EQ(NumHalvings(640, 480, 1000), 0);
@@ -42,7 +29,7 @@ TEST(ImagePyramid, DownsampleAveragesBlocks) {
 // A coarse pixel and the fine pixels it covers see the same 3D point of a
 // fronto-parallel plane: the halved camera keeps the geometry.
 TEST(ImagePyramid, HalvedCameraMatchesFinePixels) {
-  const core::Camera fine = TestCamera(64, 48);
+  const core::Camera fine = test::CentredCamera(64, 48);
   const core::Camera coarse = HalveCamera(fine, 32, 24);
   const core::Vec3 X = core::BackProject(coarse, 10.0f, 7.0f, 2.0f);
   float col, row;
@@ -52,7 +39,7 @@ TEST(ImagePyramid, HalvedCameraMatchesFinePixels) {
 }
 
 TEST(ImagePyramid, UpsampleKeepsTiltedPlane) {
-  const core::Camera fine = TestCamera(64, 48);
+  const core::Camera fine = test::CentredCamera(64, 48);
   const core::Camera coarse = HalveCamera(fine, 32, 24);
   PixelState state(32, 24);
   const core::Vec3 n = core::Normalized(core::Vec3{0.3f, -0.2f, -1.0f});
@@ -76,7 +63,7 @@ TEST(ImagePyramid, UpsampleKeepsTiltedPlane) {
 // Edge bits of the segmentation prior carry up by nearest neighbour: a coarse
 // edge pixel becomes the 2x2 fine pixels it covers; no edges stay no edges.
 TEST(ImagePyramid, UpsampleCarriesPriorEdgesByNearestNeighbour) {
-  const core::Camera fine = TestCamera(64, 48);
+  const core::Camera fine = test::CentredCamera(64, 48);
   const core::Camera coarse = HalveCamera(fine, 32, 24);
   PixelState state(32, 24);
   EXPECT_TRUE(UpsampleState(state, coarse, fine).edges.empty());

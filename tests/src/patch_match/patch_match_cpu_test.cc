@@ -9,7 +9,8 @@
 #include <vector>
 
 #include "prior/label_layers.h"
-#include "tests/src/synthetic_views.h"
+#include "tests/support/synthetic_views.h"
+#include "tests/support/temp_dir.h"
 
 namespace msp {
 namespace {
@@ -35,6 +36,17 @@ class MemorySink : public MapSink {
 
 constexpr float kPlaneDepth = 2.0f;
 
+// Every map of `a` is in `b`, with the same depths and normals bit for bit.
+void ExpectSameMaps(const MemorySink& a, const MemorySink& b) {
+  ASSERT_EQ(a.maps.size(), b.maps.size());
+  for (const auto& entry : a.maps) {
+    ASSERT_TRUE(b.maps.count(entry.first)) << entry.first.first << " " << entry.first.second;
+    const auto& other = b.maps.at(entry.first);
+    EXPECT_EQ(entry.second.first.data, other.first.data) << entry.first.second;
+    EXPECT_EQ(entry.second.second.data, other.second.data) << entry.first.second;
+  }
+}
+
 std::vector<Problem> AllProblems(int num_views) {
   std::vector<Problem> problems;
   for (int v = 0; v < num_views; ++v) {
@@ -51,14 +63,14 @@ std::vector<Problem> AllProblems(int num_views) {
 }
 
 TEST(PatchMatchCpu, RecoversFrontoParallelPlane) {
-  const std::vector<View> views =
-      testing_support::RenderFrontoParallelPlane(96, 72, 4, kPlaneDepth, 0.25f);
+  const std::vector<View> views = test::RenderFrontoParallelPlane(96, 72, 4, kPlaneDepth, 0.25f);
   const std::vector<Problem> problems = AllProblems(4);
   PatchMatchStereoOptions pm;
   MspStereoOptions msp;
   msp.num_threads = 2;
   MemorySink sink;
-  RunPatchMatchCpu(views, problems, pm, msp, "/tmp", sink);
+  const test::TempDir scratch;
+  RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), sink);
   const auto it = sink.maps.find({0, std::string("geometric")});
   ASSERT_NE(it, sink.maps.end());
   const DenseMap& depth = it->second.first;
@@ -85,12 +97,12 @@ TEST(PatchMatchCpu, RecoversFrontoParallelPlane) {
 }
 
 // With the segmentation prior on (the default) and off: the same seed gives
-// the same maps on 1 and 2 threads.
+// the same maps, and the prior the same edges, on 1 and 2 threads.
 TEST(PatchMatchCpu, DeterministicAcrossThreadCountsWithAndWithoutPrior) {
-  const std::vector<View> views =
-      testing_support::RenderFrontoParallelPlane(48, 40, 3, kPlaneDepth, 0.25f);
+  const std::vector<View> views = test::RenderFrontoParallelPlane(48, 40, 3, kPlaneDepth, 0.25f);
   const std::vector<Problem> problems = AllProblems(3);
   PatchMatchStereoOptions pm;
+  const test::TempDir scratch;
   for (bool prior : {true, false}) {
     MspStereoOptions msp;
     msp.seed = 3;
@@ -98,14 +110,11 @@ TEST(PatchMatchCpu, DeterministicAcrossThreadCountsWithAndWithoutPrior) {
     msp.write_previews = true;  // the edges that confined the last pass, to compare
     MemorySink one, two;
     msp.num_threads = 1;
-    RunPatchMatchCpu(views, problems, pm, msp, "/tmp", one);
+    RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), one);
     msp.num_threads = 2;
-    RunPatchMatchCpu(views, problems, pm, msp, "/tmp", two);
-    ASSERT_EQ(one.maps.size(), two.maps.size());
-    for (const auto& entry : one.maps) {
-      EXPECT_EQ(entry.second.first.data, two.maps.at(entry.first).first.data) << "prior " << prior;
-      EXPECT_EQ(entry.second.second.data, two.maps.at(entry.first).second.data);
-    }
+    RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), two);
+    SCOPED_TRACE(prior ? "with the prior" : "without the prior");
+    ExpectSameMaps(one, two);
     EXPECT_EQ(one.previews, two.previews);
     if (!prior) {
       EXPECT_TRUE(one.previews.empty());
@@ -126,8 +135,7 @@ TEST(PatchMatchCpu, DeterministicAcrossThreadCountsWithAndWithoutPrior) {
 // Views without layers get the segmenter's edges. Previews show both.
 TEST(PatchMatchCpu, UserMaskLayersAreUsedOverTheEmbeddedSegmenter) {
   constexpr int kWidth = 48, kHeight = 40, kSplit = 20;
-  std::vector<View> views =
-      testing_support::RenderFrontoParallelPlane(kWidth, kHeight, 3, kPlaneDepth, 0.25f);
+  std::vector<View> views = test::RenderFrontoParallelPlane(kWidth, kHeight, 3, kPlaneDepth, 0.25f);
   LabelLayers layers;
   layers.width = kWidth;
   layers.height = kHeight;
@@ -140,7 +148,8 @@ TEST(PatchMatchCpu, UserMaskLayersAreUsedOverTheEmbeddedSegmenter) {
   msp.write_previews = true;
   msp.edge_refinement = false;  // B' itself confines
   MemorySink sink;
-  RunPatchMatchCpu(views, AllProblems(3), pm, msp, "/tmp", sink);
+  const test::TempDir scratch;
+  RunPatchMatchCpu(views, AllProblems(3), pm, msp, scratch.path(), sink);
   ASSERT_EQ(sink.previews.size(), 3u);
   const std::vector<uint8_t>& aggregated = sink.previews.at(0).first;
   ASSERT_EQ(aggregated.size(), static_cast<size_t>(kWidth * kHeight));
@@ -160,56 +169,30 @@ TEST(PatchMatchCpu, UserMaskLayersAreUsedOverTheEmbeddedSegmenter) {
   }
 }
 
-TEST(PatchMatchCpu, DeterministicAcrossThreadCounts) {
-  const std::vector<View> views =
-      testing_support::RenderFrontoParallelPlane(64, 48, 3, kPlaneDepth, 0.25f);
-  const std::vector<Problem> problems = AllProblems(3);
-  PatchMatchStereoOptions pm;
-  MspStereoOptions msp;
-  msp.seed = 7;
-  std::vector<MemorySink> sinks(3);
-  const int threads[3] = {1, 2, 2};
-  for (int k = 0; k < 3; ++k) {
-    msp.num_threads = threads[k];
-    RunPatchMatchCpu(views, problems, pm, msp, "/tmp", sinks[k]);
-  }
-  for (int k = 1; k < 3; ++k) {
-    ASSERT_EQ(sinks[k].maps.size(), sinks[0].maps.size());
-    for (const auto& entry : sinks[0].maps) {
-      const auto& other = sinks[k].maps.at(entry.first);
-      EXPECT_EQ(entry.second.first.data, other.first.data);
-      EXPECT_EQ(entry.second.second.data, other.second.data);
-    }
-  }
-}
-
 // A cache budget smaller than one image's state spills every other state to
 // the scratch folder between passes; the maps must not change.
 TEST(PatchMatchCpu, SpillingStateGivesIdenticalMaps) {
-  const std::vector<View> views =
-      testing_support::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
+  const std::vector<View> views = test::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
   const std::vector<Problem> problems = AllProblems(3);
   PatchMatchStereoOptions pm;
   MspStereoOptions msp;
   MemorySink in_memory, spilled;
-  RunPatchMatchCpu(views, problems, pm, msp, "/tmp", in_memory);
+  const test::TempDir scratch;
+  RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), in_memory);
   pm.cache_size = 1e-6;  // ~1 kB
-  RunPatchMatchCpu(views, problems, pm, msp, testing::TempDir(), spilled);
-  ASSERT_EQ(spilled.maps.size(), in_memory.maps.size());
-  for (const auto& entry : in_memory.maps) {
-    EXPECT_EQ(entry.second.first.data, spilled.maps.at(entry.first).first.data);
-  }
+  RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), spilled);
+  ExpectSameMaps(in_memory, spilled);
 }
 
 TEST(PatchMatchCpu, SkipsImagesWithFinalOutputs) {
-  const std::vector<View> views =
-      testing_support::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
+  const std::vector<View> views = test::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
   PatchMatchStereoOptions pm;
   pm.geom_consistency = false;
   MspStereoOptions msp;
   MemorySink sink;
   for (int v = 0; v < 3; ++v) sink.done[v] = true;
-  RunPatchMatchCpu(views, AllProblems(3), pm, msp, "/tmp", sink);
+  const test::TempDir scratch;
+  RunPatchMatchCpu(views, AllProblems(3), pm, msp, scratch.path(), sink);
   EXPECT_TRUE(sink.maps.empty());
 }
 

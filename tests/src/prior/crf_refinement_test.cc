@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/math/rng.h"
+#include "tests/support/colour_images.h"
 
 namespace msp {
 namespace {
@@ -22,23 +23,13 @@ constexpr float kDepthMax = 2.5f;
 constexpr int kWrongEdgeCol = 30;
 constexpr float kLabelNoise = 0.05f;
 constexpr float kColorNoise = 0.03f;
-
-float Uniform(int i, int draw) { return core::RandomUniform(core::RngKey(11, 0, 0, 0, i), draw); }
+constexpr uint32_t kSeed = 11;
 
 // Same grey-ish colour on both sides (a depth edge the colour cannot see),
 // or a colour edge at `color_edge_col` when it is inside the image.
 DenseMap Colors(int color_edge_col) {
-  DenseMap image(kWidth, kHeight, 3);
-  for (int row = 0; row < kHeight; ++row) {
-    for (int col = 0; col < kWidth; ++col) {
-      const bool second = col >= color_edge_col;
-      const float rgb[3] = {second ? 0.2f : 0.6f, 0.5f, second ? 0.6f : 0.2f};
-      for (int c = 0; c < 3; ++c) {
-        image.At(row, col, c) = rgb[c] + kColorNoise * (Uniform(row * kWidth + col, c) - 0.5f);
-      }
-    }
-  }
-  return image;
+  return test::TwoColourImage(kWidth, kHeight, color_edge_col, {0.6f, 0.5f, 0.2f},
+                              {0.2f, 0.5f, 0.6f}, kColorNoise, kSeed);
 }
 
 DenseMap Depths() {
@@ -60,7 +51,9 @@ Segmentation NoisyLabels() {
     for (int col = 0; col < kWidth; ++col) {
       const int i = row * kWidth + col;
       const int32_t label = col < kWrongEdgeCol ? 1 : 2;
-      seg.labels[i] = Uniform(i, 3) < kLabelNoise ? 3 - label : label;
+      // Draw 3 of the pixel's stream: draws 0-2 are its colour noise.
+      const float u = core::RandomUniform(core::RngKey(kSeed, 0, 0, 0, i), 3);
+      seg.labels[i] = u < kLabelNoise ? 3 - label : label;
     }
   }
   seg.edges = ComputeBoundaryMap(seg.labels, kWidth, kHeight);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/math/rng.h"
+#include "tests/support/colour_images.h"
 
 namespace msp {
 namespace {
@@ -16,22 +17,12 @@ constexpr int kHeight = 48;
 // Per-channel noise amplitude on [0, 1] colours: sensor-like, far below the
 // colour steps of the test images.
 constexpr float kNoise = 0.02f;
-
-float Noise(int i, int c) {
-  return kNoise * (core::RandomUniform(core::RngKey(7, 0, 0, 0, i), c) - 0.5f);
-}
+constexpr uint32_t kNoiseSeed = 7;
 
 // Left half red, right half blue, with a little noise.
-DenseMap TwoColorImage() {
-  DenseMap image(kWidth, kHeight, 3);
-  for (int row = 0; row < kHeight; ++row) {
-    for (int col = 0; col < kWidth; ++col) {
-      const bool left = col < kWidth / 2;
-      const float rgb[3] = {left ? 0.8f : 0.1f, 0.2f, left ? 0.1f : 0.8f};
-      for (int c = 0; c < 3; ++c) image.At(row, col, c) = rgb[c] + Noise(row * kWidth + col, c);
-    }
-  }
-  return image;
+DenseMap RedBlueImage() {
+  return test::TwoColourImage(kWidth, kHeight, kWidth / 2, {0.8f, 0.2f, 0.1f}, {0.1f, 0.2f, 0.8f},
+                              kNoise, kNoiseSeed);
 }
 
 // 8x6 blocks of 8x8 pixels with colours whose contrast to their neighbours
@@ -43,7 +34,7 @@ DenseMap BlockImage() {
       const int block = (row / 8) * 8 + col / 8;
       for (int c = 0; c < 3; ++c) {
         image.At(row, col, c) = core::RandomUniform(core::RngKey(3, 0, 0, 0, block), c) * 0.5f +
-                                0.25f + Noise(row * kWidth + col, c);
+                                0.25f + test::PixelNoise(kNoiseSeed, row * kWidth + col, c, kNoise);
       }
     }
   }
@@ -55,7 +46,7 @@ int CountRegions(const std::vector<int32_t>& labels) {
 }
 
 TEST(MultiscaleSegmentation, NoRegionCrossesAColourEdge) {
-  const LabelLayers layers = SegmentMultiscale(TwoColorImage(), 3);
+  const LabelLayers layers = SegmentMultiscale(RedBlueImage(), 3);
   ASSERT_EQ(layers.NumLevels(), 3);
   EXPECT_EQ(layers.width, kWidth);
   EXPECT_EQ(layers.height, kHeight);

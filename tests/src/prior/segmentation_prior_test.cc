@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/prior_anchors.h"
+
 namespace msp {
 namespace {
 
@@ -80,21 +82,9 @@ TEST(SegmentationPrior, CoarseRegionKeptWhereItsPixelsPreferIt) {
 // Anchors of pixel p: those left of a depth edge between columns 11 and 12
 // lie on the plane z = 2, the others on the plane z = 5 + 0.3 x + 0.2 y.
 core::PriorAnchors AnchorsAround(int col, int row) {
-  static const int kCols[10] = {2, 4, 6, 8, 3, 14, 16, 18, 20, 15};
-  static const int kRows[10] = {2, 5, 9, 14, 18, 3, 7, 11, 16, 19};
-  core::PriorAnchors a{};
-  a.col = col;
-  a.row = row;
-  a.count = 10;
-  for (int i = 0; i < a.count; ++i) {
-    a.cols[i] = kCols[i];
-    a.rows[i] = kRows[i];
-    const float x = 0.1f * kCols[i];
-    const float y = 0.1f * kRows[i];
-    a.points[i] =
-        kCols[i] < 12 ? core::Vec3{x, y, 2.0f} : core::Vec3{x, y, 5.0f + 0.3f * x + 0.2f * y};
-  }
-  return a;
+  return test::AnchorsAcrossDepthEdge(col, row, {2, 4, 6, 8, 3, 14, 16, 18, 20, 15},
+                                      {2, 5, 9, 14, 18, 3, 7, 11, 16, 19}, /*edge_col=*/12,
+                                      [](float x, float y) { return 5.0f + 0.3f * x + 0.2f * y; });
 }
 
 TEST(SegmentationPrior, AggregationKeepsTheLayerThatFollowsTheDepthEdge) {

@@ -1,9 +1,12 @@
-// A self-removing temporary folder for tests that write files.
+// A self-removing scratch folder for tests that write files: a fresh folder
+// under the system's temporary directory ($TMPDIR, else /tmp), removed with
+// everything in it when the TempDir goes out of scope.
 #pragma once
 
 #include <stdlib.h>
 
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 
 namespace msp {
@@ -13,7 +16,10 @@ class TempDir {
  public:
   TempDir() {
     std::string pattern = (std::filesystem::temp_directory_path() / "msp_test_XXXXXX").string();
-    path_ = ::mkdtemp(&pattern[0]);
+    if (::mkdtemp(&pattern[0]) == nullptr) {
+      throw std::runtime_error("cannot create a temporary folder from " + pattern);
+    }
+    path_ = pattern;
   }
   ~TempDir() {
     std::error_code ignored;

@@ -1,0 +1,164 @@
+#include "core/patch_match/output_filter.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "tests/support/plane_scene.h"
+
+namespace msp {
+namespace core {
+namespace {
+
+constexpr float kDepth = 4.0f;
+constexpr int kCol = 100, kRow = 75;
+constexpr float kDegrees = 3.14159265f / 180.0f;
+
+// COLMAP's default filter: NCC >= 0.1, a triangulation angle of 3 degrees,
+// a reprojection error of at most 1 px in geometric passes.
+FilterParams DefaultFilter() {
+  FilterParams f;
+  f.min_ncc = 0.1f;
+  f.min_triangulation_angle = 3.0f * kDegrees;
+  f.min_num_consistent = 2;
+  f.geom_max_error = 1.0f;
+  return f;
+}
+
+// The plane z = 4 seen by the scene's source (view 0, 0.4 to the right:
+// ~5.7 degrees at the plane), its mirror image (view 1, ~5.7 degrees) and a
+// source 0.02 from the reference (view 2, ~0.3 degrees). The state holds
+// the true plane.
+void MakeThreeViewScene(test::PlaneScene* s) {
+  test::MakeScene(kDepth, true, s);
+  test::AddSourceView(test::MirroredSourceCamera(), s);
+  test::AddSourceView(
+      test::SkewedIntrinsicsCamera(200, 150, 175.0f, test::Identity(), Vec3{0.02f, 0.0f, 0.0f}), s);
+}
+
+void SetPlane(const PassParams& p, int col, int row, const PlaneHypothesis& h) {
+  p.state.Set(p.state.Index(col, row), h);
+}
+
+TEST(OutputFilter, TriangulationAngleIsTheAngleBetweenTheRays) {
+  EXPECT_NEAR(TriangulationAngle(Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 0, 1}), 45.0f * kDegrees,
+              1e-6f);
+  EXPECT_NEAR(TriangulationAngle(Vec3{-1, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 0, 0}), 180.0f * kDegrees,
+              1e-5f);
+  EXPECT_EQ(TriangulationAngle(Vec3{0, 0, 0}, Vec3{0, 0, 0}, Vec3{0, 0, 1}), 0.0f);
+}
+
+// On the true plane the two wide views agree; the near view sees the point
+// at too small an angle, and counts only when the angle filter is off.
+TEST(OutputFilter, CountsTheViewsThatAgreeWithTheTruePlane) {
+  test::PlaneScene s;
+  MakeThreeViewScene(&s);
+  const PassParams& p = s.params;
+  FilterParams f = DefaultFilter();
+  for (int row = 40; row <= 110; row += 35) {
+    for (int col = 60; col <= 140; col += 40) {
+      EXPECT_EQ(CountConsistentViews(p, f, col, row), 2) << col << "," << row;
+    }
+  }
+  f.min_triangulation_angle = 0.0f;
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 3);
+  // Just below and above the wide views' angle (~5.7 degrees at the centre).
+  f.min_triangulation_angle = 5.0f * kDegrees;
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 2);
+  f.min_triangulation_angle = 6.5f * kDegrees;
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 0);
+}
+
+// A threshold the true plane passes everywhere (its NCC is above 0.9 in
+// both views) drops both views of a plane 10 % or 20 % off (their NCC on
+// this texture stays below 0.65), pixel by pixel.
+TEST(OutputFilter, AWrongDepthIsDroppedWhereTheTrueDepthIsKept) {
+  test::PlaneScene s;
+  MakeThreeViewScene(&s);
+  const PassParams& p = s.params;
+  FilterParams f = DefaultFilter();
+  f.min_ncc = 0.8f;
+  // Where both wide views see the pixel.
+  for (int row = 30; row <= 120; row += 10) {
+    for (int col = 50; col <= 140; col += 10) {
+      for (const float scale : {0.8f, 0.9f, 1.1f, 1.2f}) {
+        SetPlane(p, col, row, PlaneHypothesis{scale * kDepth, Vec3{0.0f, 0.0f, -1.0f}});
+        EXPECT_EQ(CountConsistentViews(p, f, col, row), 0) << col << "," << row << " x" << scale;
+      }
+      SetPlane(p, col, row, PlaneHypothesis{kDepth, Vec3{0.0f, 0.0f, -1.0f}});
+      EXPECT_EQ(CountConsistentViews(p, f, col, row), 2) << col << "," << row;
+    }
+  }
+}
+
+// The NCC threshold: views whose NCC is below it do not count.
+TEST(OutputFilter, NccBelowTheThresholdDropsTheView) {
+  test::PlaneScene s;
+  MakeThreeViewScene(&s);
+  const PassParams& p = s.params;
+  FilterParams f = DefaultFilter();
+  RefWindow w;
+  PrepareWindow(p, kCol, kRow, &w);
+  const PreparedPlane plane = PreparePlane(p, kCol, kRow, p.state.Get(p.state.Index(kCol, kRow)));
+  const float ncc0 = 1.0f - PhotometricViewCost(p, w, 0, plane);
+  const float ncc1 = 1.0f - PhotometricViewCost(p, w, 1, plane);
+  ASSERT_GT(ncc0, 0.5f);
+  ASSERT_GT(ncc1, 0.5f);
+  ASSERT_GT(std::fabs(ncc0 - ncc1), 1e-4f);
+  f.min_ncc = fminf(ncc0, ncc1) + 0.5f * std::fabs(ncc0 - ncc1);  // between the two
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 1);
+  f.min_ncc = fmaxf(ncc0, ncc1) + 1e-4f;
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 0);
+}
+
+// No texture in the reference: no view can agree photometrically.
+TEST(OutputFilter, TexturelessPixelHasNoConsistentView) {
+  test::PlaneScene s;
+  test::MakeScene(kDepth, /*textured=*/false, &s);
+  EXPECT_EQ(CountConsistentViews(s.params, DefaultFilter(), kCol, kRow), 0);
+}
+
+// No depth, or a plane seen edge-on, counts no view.
+TEST(OutputFilter, NoDepthOrAnInvalidPlaneCountsNothing) {
+  test::PlaneScene s;
+  MakeThreeViewScene(&s);
+  const PassParams& p = s.params;
+  const FilterParams f = DefaultFilter();
+  SetPlane(p, kCol, kRow, PlaneHypothesis{0.0f, Vec3{0.0f, 0.0f, -1.0f}});
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 0);
+  // The normal faces away from the camera: the plane passes behind it.
+  SetPlane(p, kCol, kRow, PlaneHypothesis{kDepth, Vec3{0.0f, 0.0f, 1.0f}});
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 0);
+}
+
+// In a geometric pass a view must also reproject consistently: the view
+// whose depth map holds another plane (20 % deeper: ~3 px off) is dropped; a view
+// without a depth map is judged photometrically only.
+TEST(OutputFilter, GeometricPassDropsAViewWhoseDepthDisagrees) {
+  test::PlaneScene s;
+  MakeThreeViewScene(&s);
+  PassParams& p = s.params;
+  const std::vector<float> truth = test::PlaneDepthMap(p.src[0].camera, kDepth);
+  const std::vector<float> deeper = test::PlaneDepthMap(p.src[1].camera, 1.2f * kDepth);
+  const Camera& cam0 = p.src[0].camera;
+  const Camera& cam1 = p.src[1].camera;
+  p.src[0].depth = ImageView{truth.data(), cam0.width, cam0.height, cam0.width};
+  p.src[1].depth = ImageView{deeper.data(), cam1.width, cam1.height, cam1.width};
+  p.geometric = 1;
+  FilterParams f = DefaultFilter();
+  f.min_triangulation_angle = 0.0f;  // view 2 (no depth map) counts photometrically
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 2);  // views 0 and 2
+  // The same maps in a photometric pass: the depth maps play no part.
+  p.geometric = 0;
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 3);
+  // Both depth maps true: all three views.
+  const std::vector<float> truth1 = test::PlaneDepthMap(cam1, kDepth);
+  p.src[1].depth = ImageView{truth1.data(), cam1.width, cam1.height, cam1.width};
+  p.geometric = 1;
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 3);
+}
+
+}  // namespace
+}  // namespace core
+}  // namespace msp

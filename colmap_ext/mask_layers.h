@@ -1,5 +1,5 @@
-// Reads the per-image segmentation mask layers of the prior (paper "Edge
-// Aggregation": mask maps M_1..M_N): single-channel 16-bit PNGs of region
+// Reads the per-image segmentation mask layers of the prior (docs/method.md
+// section 4.1: mask maps M_1..M_N): single-channel 16-bit PNGs of region
 // ids, 0 = unlabelled, at <mask_path>/<image_name>.<level>.png with level 0
 // the coarsest, the size of the undistorted image. Images without any layer
 // fall back to the embedded segmenter. Layout: docs/segmentation_masks.md.

@@ -1,5 +1,5 @@
 // Parsing of stereo/patch-match.cfg, following COLMAP's
-// PatchMatchController::ReadProblems (contract section 5).
+// PatchMatchController::ReadProblems (COLMAP's src/mvs/patch_match.cc).
 #include "colmap_ext/patch_match_config.h"
 
 #include <cerrno>

@@ -1,5 +1,5 @@
 // cameras.bin / images.bin / points3D.bin exactly as COLMAP's
-// Reconstruction::{Read,Write}Binary lay them out (contract section 4).
+// Reconstruction::{Read,Write}Binary lay them out (COLMAP's src/base/reconstruction.cc).
 #include <stdexcept>
 #include <string>
 

@@ -1,5 +1,5 @@
 // LoadWorkspace: a COLMAP dense workspace -> views and problems, with one
-// specific error for every kind of bad input (contract sections 1, 4, 5).
+// specific error for every kind of bad input (README, "What it reads and writes").
 #include "colmap_ext/workspace.h"
 
 #include <algorithm>

@@ -107,7 +107,7 @@ struct MspStereoOptions {
   double reliable_min_spread = 0.2;
   // Anchor search range in pixels of the current round (APD: 100).
   int anchor_max_distance = 100;
-  // Segmentation prior (algorithm.md 3.1-3.2): anchors never cross its edges; false = "w/o Mul.".
+  // Segmentation prior (docs/method.md section 4): anchors never cross its edges; "w/o Mul.".
   bool segmentation_prior = true;
   // Aggregate layers per region by best anchor subsets (eqs. 4-5); false = union ("w/o Agr.").
   bool edge_aggregation = true;

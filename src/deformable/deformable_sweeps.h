@@ -1,5 +1,5 @@
 // Whole-image steps of deformable patch matching on the CPU (APD-MVS
-// baseline, algorithm.md 2): classify every pixel after a pass, map each pixel
+// baseline, docs/method.md section 3): classify every pixel after a pass, map each pixel
 // to its nearest reliable pixel, and run red-black iterations in which
 // unreliable pixels with anchors take the deformable update and every other
 // pixel the conventional one.

@@ -1,4 +1,4 @@
-// Nearest reliable pixel of every pixel (algorithm.md 2.2): an unreliable ray
+// Nearest reliable pixel of every pixel (docs/method.md section 3.2): an unreliable ray
 // hit of the anchor search snaps to it. An exact Euclidean feature transform
 // (Felzenszwalb & Huttenlocher's lower envelope of parabolas, a column pass
 // then a row pass), linear in the number of pixels, instead of a 201x201 scan.

@@ -48,15 +48,8 @@ const char* KindName(PassKind kind) {
 }
 
 const char* StartName(PassStart start) {
-  switch (start) {
-    case PassStart::kRandom:
-      return "random start";
-    case PassStart::kUpsampled:
-      return "upsampled state";
-    case PassStart::kPrevious:
-      break;
-  }
-  return "previous state";
+  constexpr const char* kNames[] = {"random start", "upsampled state", "previous state"};
+  return kNames[static_cast<int>(start)];
 }
 
 std::string SweepsName(const Pass& pass) {
@@ -66,15 +59,8 @@ std::string SweepsName(const Pass& pass) {
 }
 
 const char* OutputName(PassOutput output) {
-  switch (output) {
-    case PassOutput::kNone:
-      return "";
-    case PassOutput::kUnfiltered:
-      return "; writes unfiltered maps";
-    case PassOutput::kFinal:
-      break;
-  }
-  return "; writes final maps";
+  constexpr const char* kNames[] = {"", "; writes unfiltered maps", "; writes final maps"};
+  return kNames[static_cast<int>(output)];
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// The APD pass schedule of the CPU back-end as data (algorithm.md 2):
+// The APD pass schedule of the CPU back-end as data (docs/method.md section 3):
 // coarse-to-fine rounds, each one photometric pass and, with
 // geom_consistency, three geometric passes. Each pass says how it starts,
 // which sweeps it runs, whether its local refinement classifies for the next

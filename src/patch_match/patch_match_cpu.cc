@@ -305,7 +305,7 @@ class CpuRunner {
     settings->nearest_edge = nearest_edge_.data();
   }
 
-  // The deformable step of a pass (algorithm.md 2): the state the previous
+  // The deformable step of a pass (docs/method.md section 3): the state the previous
   // pass left (upsampled at a round start) is classified, then unreliable
   // pixels with anchors take the deformable update during the pass's
   // iterations. The prior's edges of the image confine the anchor search;
@@ -334,7 +334,7 @@ class CpuRunner {
         classify_seconds, stats.anchor_seconds, stats.sweep_seconds);
   }
 
-  // The prior of one image after a deformable pass (algorithm.md 3.1-3.2): its
+  // The prior of one image after a deformable pass (docs/method.md section 4): its
   // anchors of this pass and the depth the pass left give the edges that
   // confine the following passes. The first call of an image has only the
   // photometric pass's depth, mostly noise where the prior matters

@@ -1,4 +1,4 @@
-// Multi-granularity label layers of one image (paper "Edge Aggregation": the
+// Multi-granularity label layers of one image (docs/method.md section 4.1: the
 // mask maps M_1..M_N): per level a row-major map of region ids, level 0 the
 // coarsest, 0 = unlabelled. Filled from mask files by colmap_ext or by the
 // embedded segmenter (multiscale_segmentation.h).

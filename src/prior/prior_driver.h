@@ -1,4 +1,4 @@
-// The segmentation prior as the CPU passes use it (algorithm.md 3.1-3.2). Per
+// The segmentation prior as the CPU passes use it (docs/method.md section 4). Per
 // reference image and round, the label layers at the round's resolution (the
 // user's mask layers resampled, or the embedded segmenter on the colour
 // image); per deformable pass, edge aggregation of the layers by the anchors

@@ -77,6 +77,7 @@ core::BoundaryView MakeBoundaryView(const std::vector<uint8_t>& boundary, int wi
   return core::BoundaryView{boundary.data(), width, height, width};
 }
 
+// S_max of every anchored pixel (eq. 4), the layers tested in one walk per anchor.
 std::vector<uint32_t> ChooseBestLayers(const LabelLayers& layers,
                                        const std::vector<std::vector<uint8_t>>& boundaries,
                                        const std::vector<core::PriorAnchors>& pixels,
@@ -106,6 +107,8 @@ std::vector<uint32_t> ChooseBestLayers(const LabelLayers& layers,
   return best;
 }
 
+// Label retention (eq. 5): region k of layer n is kept when n is the layer
+// most of the region's pixels chose as S_max.
 std::vector<std::vector<uint8_t>> RetainRegions(const LabelLayers& layers,
                                                 const std::vector<uint32_t>& best_layers) {
   const int num_layers = layers.NumLevels();

@@ -1,5 +1,5 @@
-// Edge aggregation of the multi-granularity segmentation prior (paper "Edge
-// Aggregation", eqs. 4-5): boundary maps B_n of the label layers, the best
+// Edge aggregation of the multi-granularity segmentation prior (docs/method.md
+// sections 4.2-4.4, eqs. 4-5): boundary maps B_n of the label layers, the best
 // layer S_max of every unreliable pixel, label retention per region, and the
 // aggregated segmentation whose boundary map B' confines anchor search. The
 // union of all layers' boundaries is the ablation without aggregation.

@@ -1,10 +1,9 @@
-// Photometric matching cost: 1 - NCC over a (2r+1)^2 window sampled every
-// `step` pixels (paper: 11x11, every other pixel), the source window warped by
-// the plane-induced homography, optionally with COLMAP's bilateral weights.
-// This header holds the parameters, the rules every form shares and the
-// general form; the sweeps call the fast form of a prepared window
-// (WindowNccCost, window_cost.h; WindowNccCosts, window_batch.h), which
-// takes the general form for the windows it cannot prepare.
+// Photometric matching cost (eq. 2, docs/method.md section 2.3): 1 - NCC over a (2r+1)^2 window
+// sampled every `step` pixels (paper: 11x11, every other pixel), the source window warped by the
+// plane-induced homography, optionally with COLMAP's bilateral weights. This header holds the
+// parameters, the rules every form shares and the general form; the sweeps call the fast form of a
+// prepared window (WindowNccCost, window_cost.h; WindowNccCosts, window_batch.h), which takes the
+// general form for the windows it cannot prepare.
 #pragma once
 
 #include <cmath>

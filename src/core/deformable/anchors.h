@@ -1,4 +1,4 @@
-// Anchor search of the APD-MVS baseline (algorithm.md 2.2): from an unreliable
+// Anchor search of the APD-MVS baseline (docs/method.md section 3.2): from an unreliable
 // pixel p, rays in 8 sectors of 45 degrees look for reliable pixels at radii
 // 2, 4, 8, 16, 32, then every 25 px; a non-reliable hit snaps to its nearest
 // reliable pixel. A RANSAC plane through the hits' 3D points (triangles that

@@ -1,5 +1,5 @@
 // Deformable matching cost of the APD-MVS baseline (paper eq. 3,
-// algorithm.md 2.2): m(p, S) = lambda m(p, W) + (1 - lambda) mean_s m(s, W_s).
+// docs/method.md section 3.3): m(p, S) = lambda m(p, W) + (1 - lambda) mean_s m(s, W_s).
 // W is the usual window at p; W_s a small window at anchor s. Every window is
 // warped with p's plane, so the patch deforms to follow the reliable anchors
 // of the same surface while keeping p's hypothesis.

@@ -1,5 +1,5 @@
 // Capacities and labels of the deformable patch matching of the APD-MVS
-// baseline (algorithm.md section 2), defined once: the per-pixel arrays, the
+// baseline (docs/method.md section 3), defined once: the per-pixel arrays, the
 // option checks and the whole-image steps all use these.
 #pragma once
 
@@ -8,7 +8,7 @@
 namespace msp {
 namespace core {
 
-// Pixel classes after a pass (algorithm.md 2.1). Unknown pixels (border, no
+// Pixel classes after a pass (docs/method.md section 3.1). Unknown pixels (border, no
 // depth, no selected view, or no anchors) use conventional PatchMatch.
 constexpr uint8_t kUnknown = 0;
 constexpr uint8_t kReliable = 1;

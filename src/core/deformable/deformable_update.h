@@ -1,5 +1,5 @@
 // One red-black update of an unreliable pixel with deformable patch matching
-// (APD-MVS baseline, algorithm.md 2.2): candidates are the anchors' planes
+// (APD-MVS baseline, docs/method.md section 3.4): candidates are the anchors' planes
 // continued to the pixel plus the anchors' RANSAC plane, views are selected
 // on the anchors' candidates (8, as ACMM's propagation has), candidates are
 // compared with the deformable cost (paper eq. 3), then the usual

@@ -1,5 +1,5 @@
 // The local refinement that ends a pass fused with the classification that
-// starts the next one (APD schedule, algorithm.md 1 and 2.1). Both sweep the
+// starts the next one (APD schedule, docs/method.md sections 2.8 and 3.1). Both sweep the
 // depth of the pixel's plane, normal fixed, over the same views on the same
 // grid of disparity offsets: the refinement over +-kLocalRefineRadius px of
 // the filtered depth, the classification over +-kCurveHalfWidth px of the

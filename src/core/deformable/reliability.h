@@ -1,4 +1,4 @@
-// Reliable / unreliable pixels of the APD-MVS baseline (algorithm.md 2.1):
+// Reliable / unreliable pixels of the APD-MVS baseline (docs/method.md section 3.1):
 // with the normal fixed, the view-weighted cost is sampled at 61 disparity
 // offsets around the pixel's depth. A single, low, centred minimum makes the
 // pixel reliable; a flat or ambiguous curve makes it unreliable, and it will

@@ -1,6 +1,5 @@
-// Capacities of the segmentation prior (paper "Multi-granularity Segmentation
-// Prior"), defined once: option checks, the mask reader and the per-pixel
-// arrays all use these.
+// Capacities of the segmentation prior (docs/method.md section 4), defined once: option checks, the
+// mask reader and the per-pixel arrays all use these.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Edge confinement of anchors (paper "Edge Aggregation"): an anchor s is kept
+// Edge confinement of anchors (docs/method.md section 4.2): an anchor s is kept
 // for the unreliable pixel p only if the line l from p to s does not intersect
 // the boundary map B, {s in S_n | l cap B_n = empty}. Host/device neutral.
 #pragma once

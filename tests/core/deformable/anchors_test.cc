@@ -196,7 +196,7 @@ TEST(Anchors, TrianglesMustContainThePixel) {
   EXPECT_EQ(a.count, 0);
 }
 
-// Edge confinement (paper "Edge Aggregation"): the reliable pixels right of a
+// Edge confinement (docs/method.md section 4.2): the reliable pixels right of a
 // depth edge 15 px east of p are ray hits of the unconfined search and none
 // of the confined one; those on p's side stay hits and anchors.
 TEST(Anchors, DepthEdgeRejectsHitsBehindItAndKeepsThoseInside) {

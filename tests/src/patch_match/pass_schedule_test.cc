@@ -92,17 +92,16 @@ TEST(PassSchedule, SeveralRoundsWithoutGeometricConsistencyClassifyAtEachRoundSt
   pm.geom_consistency = false;
   MspStereoOptions msp;
   msp.write_previews = true;
-  EXPECT_EQ(Printed(pm, msp, 1500, 1000),
-            "round 1/2 (scale 1/2), pass 1 photometric (id 0): random start; 3 x checkerboard; "
-            "refine\n"
-            "round 2/2 (scale 1/1), pass 1 photometric (id 8): upsampled state; 3 x deformable "
-            "(classified after pass 1); refine; writes final maps; previews\n");
-  msp.segmentation_prior = false;
-  EXPECT_EQ(Printed(pm, msp, 1500, 1000),
-            "round 1/2 (scale 1/2), pass 1 photometric (id 0): random start; 3 x checkerboard; "
-            "refine\n"
-            "round 2/2 (scale 1/1), pass 1 photometric (id 8): upsampled state; 3 x deformable "
-            "(classified after pass 1); refine; writes final maps\n");
+  // Previews show the prior's edges: without the prior there are none.
+  for (bool prior : {true, false}) {
+    msp.segmentation_prior = prior;
+    EXPECT_EQ(Printed(pm, msp, 1500, 1000),
+              "round 1/2 (scale 1/2), pass 1 photometric (id 0): random start; 3 x checkerboard; "
+              "refine\n"
+              "round 2/2 (scale 1/1), pass 1 photometric (id 8): upsampled state; 3 x deformable "
+              "(classified after pass 1); refine; writes final maps" +
+                  std::string(prior ? "; previews" : "") + "\n");
+  }
 }
 
 // Invariants the runner relies on, over the option combinations.

@@ -266,6 +266,8 @@ MSP_HD void PrepareAnchorPairLanes(const AnchorWindows& w, const int* anchor, co
     out->y[k] = _mm256_permutevar8x32_ps(_mm256_loadu_ps(w.y[k]), index);
     out->value[k] = _mm256_permutevar8x32_ps(_mm256_loadu_ps(w.value[k]), index);
   }
+#else
+  (void)w;  // the scalar path reads the windows through the lanes' anchors
 #endif
 }
 

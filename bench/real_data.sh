@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs the whole workflow on a ready COLMAP dense workspace (e.g. one of
-# ../shared/data/*) and prints time, peak memory and fused-cloud figures.
+# the Middlebury and Strecha sets) and prints time, peak memory and fused-cloud figures.
 #
 #   bench/real_data.sh <dataset dir> <output dir> [--sources N] [--bbox x0 y0 z0 x1 y1 z1]
 #                      [msp_stereo options...]

@@ -1,7 +1,8 @@
 // Compiles every src/core header for the device, so host/device compatibility
-// of the shared per-pixel code is checked on every build with nvcc. The kernel
-// runs the conventional PatchMatch update for one colour of a checkerboard:
-// the same function the CPU driver calls.
+// of the shared per-pixel code is checked on every build with nvcc. Its
+// kernels (a conventional and a deformable checkerboard colour, the
+// classification, the local refinement with classification) call the same
+// functions as the CPU driver.
 #include "core/cost/ncc.h"
 #include "core/cost/ref_window.h"
 #include "core/cost/window_batch.h"

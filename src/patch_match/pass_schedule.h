@@ -1,4 +1,4 @@
-// The APD pass schedule of the CPU back-end as data (docs/method.md section 3):
+// The APD pass schedule of the CPU back-end as data (docs/method.md section 1.3):
 // coarse-to-fine rounds, each one photometric pass and, with
 // geom_consistency, three geometric passes. Each pass says how it starts,
 // which sweeps it runs, whether its local refinement classifies for the next
@@ -76,7 +76,7 @@ std::vector<Pass> BuildPassSchedule(const PatchMatchStereoOptions& pm, const Msp
                                     int max_width, int max_height);
 
 // One line per pass, e.g. "round 1/1 (scale 1/1), pass 2 geometric (id 1):
-// previous state; deformable (classes from the refine); refine + classify; prior".
+// previous state; 3 x deformable (classes from the refine); refine + classify; prior".
 std::string ToString(const Pass& pass);
 std::string ToString(const std::vector<Pass>& schedule);
 

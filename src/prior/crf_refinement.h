@@ -4,7 +4,7 @@
 //                                        + (1/t) |I_p . I_q - 1| / beta)),
 // t the mean-field iteration (colour dominates early, depth later), D the
 // current depth, I the normalised RGB colour, and a unary from the aggregated
-// labels (the energy of eq. 10). Output: the refined labels and their
+// labels (the energy of the supplement's eq. 10). Output: the refined labels and their
 // depth-edge map.
 #pragma once
 

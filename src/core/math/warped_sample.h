@@ -201,12 +201,12 @@ inline __m256 Bilinear(const WarpedCells& c, __m256 p00, __m256 p01, __m256 p10,
 
 // The bilinear values of eight cells. The two taps of a cell's row are
 // adjacent: one 64-bit load fetches both, and two cells share a 128-bit half.
-// Plain loads, not gather instructions, which are slower here. Lanes are
+// Plain loads rather than gather instructions (BENCHMARKS.md). Lanes are
 // loaded in the order (0, 1, 4, 5 | 2, 3, 6, 7) so that de-interleaving the
 // pairs puts the samples back in lane order.
 inline __m256 LoadBilinear(const ImageView& src, const WarpedCells& c) {
-  // The indices leave the vector as four 64-bit pairs, which is quicker
-  // than a store and eight 32-bit reloads.
+  // The indices leave the vector as four 64-bit pairs rather than by a
+  // store and eight 32-bit reloads (BENCHMARKS.md).
   const __m128i low_half = _mm256_castsi256_si128(c.index);
   const __m128i high_half = _mm256_extracti128_si256(c.index, 1);
   const uint64_t pair[4] = {static_cast<uint64_t>(_mm_cvtsi128_si64(low_half)),

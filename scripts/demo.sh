@@ -4,7 +4,7 @@
 # evaluation against the exact ground truth. Re-running resumes: existing maps
 # are kept, fusion and evaluation run again. Delete out/scene to start over.
 # The scene is 640x480; stereo runs at MSP_DEMO_MAX_IMAGE_SIZE (default 320,
-# a few minutes on 2 cores; -1 = full size, see BENCHMARKS.md for its time).
+# under 2 minutes of stereo on 2 cores; -1 = full size, see BENCHMARKS.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install_deps.sh

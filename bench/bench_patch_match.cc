@@ -3,18 +3,21 @@
 // one plane at a time and eight at once, the deformable cost against the conventional one, and
 // whole red-black iterations (pixels per second) on 1 and N threads.
 //
-//   msp_bench_patch_match [width height num_views [ncc]]
+//   msp_bench_patch_match [width height num_views [ncc]]   (--help for the options)
 #include <time.h>
 
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
+#include <exception>
+#include <iostream>
 #include <string>
 #include <vector>
 
 #include "base/parallel_for.h"
 #include "core/deformable/deformable_cost.h"
 #include "core/patch_match/patch_match_kernel.h"
+#include "options/option_parser.h"
+#include "options/tool_command_line.h"
 #include "patch_match/pixel_state.h"
 #include "patch_match/sweeps.h"
 #include "tests/support/synthetic_views.h"
@@ -27,6 +30,16 @@ constexpr bool kVectorPath = true;
 #else
 constexpr bool kVectorPath = false;
 #endif
+
+// Distance in pixels from the centre of the deformable cost's anchors, one per
+// sector.
+constexpr int kAnchorDistance = 12;
+// Image sides the benchmark accepts: below the minimum the deformable cost's
+// anchors leave few pixels to time; above the maximum the rendered views of a
+// full source set take gigabytes.
+constexpr int kMinImageSide = 32;
+constexpr int kMaxImageSide = 4096;
+static_assert(kMinImageSide > 2 * kAnchorDistance, "the deformable cost must time some pixels");
 
 double ThreadCpuSeconds() {
   timespec t;
@@ -148,7 +161,6 @@ void BenchCandidateBatch(const core::PassParams& p, int width, int height) {
 // the conventional one on the same pixels and views, one core: the ratio is
 // what a deformable update pays per view and candidate.
 void BenchDeformableCost(const core::PassParams& p, int width, int height) {
-  constexpr int kAnchorDistance = 12;  // pixels from the centre, one anchor per sector
   const int dx[core::kMaxAnchors] = {1, 1, 0, -1, -1, -1, 0, 1};
   const int dy[core::kMaxAnchors] = {0, 1, 1, 1, 0, -1, -1, -1};
   const core::PlaneHypothesis h{2.0f, core::Vec3{0.0f, 0.0f, -1.0f}};
@@ -186,6 +198,26 @@ void BenchDeformableCost(const core::PassParams& p, int width, int height) {
       (2 * d.anchor_window_radius / d.anchor_window_step + 1) *
           (2 * d.anchor_window_radius / d.anchor_window_step + 1),
       seconds[1] / seconds[0], sink > 0 ? 1.0 : 0.0);
+}
+
+struct BenchOptions {
+  int width = 640;
+  int height = 480;
+  int num_views = 10;  // the reference and num_views - 1 sources
+  std::string mode = "all";
+};
+
+void CheckRange(const std::string& name, int value, int lo, int hi) {
+  if (value < lo || value > hi) {
+    throw OptionError("--" + name + " must be in [" + std::to_string(lo) + ", " +
+                      std::to_string(hi) + "], not " + std::to_string(value));
+  }
+}
+
+void CheckBenchOptions(const BenchOptions& o) {
+  CheckRange("width", o.width, kMinImageSide, kMaxImageSide);
+  CheckRange("height", o.height, kMinImageSide, kMaxImageSide);
+  CheckRange("num_views", o.num_views, 2, 1 + core::kMaxSourceViews);
 }
 
 void Run(int width, int height, int num_views, bool ncc_only) {
@@ -253,10 +285,32 @@ void Run(int width, int height, int num_views, bool ncc_only) {
 }  // namespace msp
 
 int main(int argc, char** argv) {
-  const int width = argc > 1 ? std::atoi(argv[1]) : 640;
-  const int height = argc > 2 ? std::atoi(argv[2]) : 480;
-  const int num_views = argc > 3 ? std::atoi(argv[3]) : 10;
-  const bool ncc_only = argc > 4 && std::string(argv[4]) == "ncc";
-  msp::Run(width, height, num_views, ncc_only);
+  msp::BenchOptions options;
+  msp::ToolCommandLine command_line(
+      "Usage: msp_bench_patch_match [width height num_views [ncc]]\n"
+      "       msp_bench_patch_match [--width W] [--height H] [--num_views N] [--mode ncc]",
+      "Throughput of the CPU back-end's building blocks on a rendered fronto-parallel\n"
+      "plane: matching-cost evaluations per second (general and fast form, one and eight\n"
+      "planes at once, the deformable cost, the geometric term) on one core, then one\n"
+      "red-black iteration on 1 and all threads. Bare words are width, height, num_views\n"
+      "and mode, in this order.");
+  command_line.Add("width", &options.width, "Image width in pixels.");
+  command_line.Add("height", &options.height, "Image height in pixels.");
+  command_line.Add("num_views", &options.num_views,
+                   "Rendered views: the reference and num_views - 1 sources.");
+  command_line.AddChoice("mode", &options.mode, {"all", "ncc"},
+                         "ncc = the matching costs only; all = then the red-black iterations.");
+  command_line.SetPositional({"width", "height", "num_views", "mode"});
+  try {
+    if (command_line.Parse(argc, argv) == msp::ParseStatus::kHelp) {
+      std::cout << command_line.Usage();
+      return 0;
+    }
+    msp::CheckBenchOptions(options);
+  } catch (const std::exception& e) {
+    std::cerr << "ERROR: " << e.what() << std::endl;
+    return 1;
+  }
+  msp::Run(options.width, options.height, options.num_views, options.mode == "ncc");
   return 0;
 }

@@ -6,6 +6,8 @@
 #include "colmap_ext/errors.h"
 #include "colmap_ext/file_util.h"
 #include "core/prior/prior_limits.h"
+#include "options/option_name.h"
+#include "options/stereo_options.h"
 
 namespace msp {
 namespace {
@@ -141,7 +143,8 @@ std::vector<ImageLabelLayers> LoadMaskLayers(const std::string& mask_dir,
       *log << "Segmentation prior: " << levels << " mask levels from " << mask_dir << " for "
            << with_files << " images";
       if (levels != expected_levels) {
-        *log << " (--MspStereo.num_mask_levels is " << expected_levels << "; the files decide)";
+        *log << " (" << MSP_OPTION_FLAG_OF(MspStereoOptions, num_mask_levels) << " is "
+             << expected_levels << "; the files decide)";
       }
       *log << "\n";
     }

@@ -13,7 +13,9 @@
 #include "colmap_ext/map_writer.h"
 #include "colmap_ext/workspace.h"
 #include "options/option_check.h"
+#include "options/option_name.h"
 #include "options/option_parser.h"
+#include "patch_match/pass_schedule.h"
 #include "stereo.h"
 
 namespace msp {
@@ -29,41 +31,53 @@ void PrintHeading(const std::string& heading) {
 }
 
 // Options accepted for COLMAP compatibility that this build does not honour;
-// said once at start-up so nobody wonders why they had no effect.
+// said once at start-up so nobody wonders why they had no effect. Option
+// names are spelt from their fields (option_name.h).
 void WarnAboutIgnoredOptions(const StereoCommandOptions& options) {
-  if (options.patch_match.write_consistency_graph) {
-    std::cout << "WARNING: --PatchMatchStereo.write_consistency_graph is ignored: no "
-                 "consistency graphs are written (no COLMAP command reads them)\n";
-  }
+  const PatchMatchStereoOptions& p = options.patch_match;
+  const MspStereoOptions& m = options.msp;
   const PatchMatchStereoOptions defaults;
-  if (options.patch_match.window_step != defaults.window_step) {
-    std::cout << "WARNING: --PatchMatchStereo.window_step is ignored (the window sampling "
-                 "step is --MspStereo.window_step)\n";
+  if (p.write_consistency_graph) {
+    std::cout << "WARNING: " << MSP_OPTION_FLAG(p, write_consistency_graph)
+              << " is ignored: no consistency graphs are written (no COLMAP command reads "
+                 "them)\n";
   }
-  if (!options.msp.bilateral_ncc && (options.patch_match.sigma_spatial != defaults.sigma_spatial ||
-                                     options.patch_match.sigma_color != defaults.sigma_color)) {
-    std::cout << "WARNING: --PatchMatchStereo.sigma_spatial / sigma_color only apply with "
-                 "--MspStereo.bilateral_ncc true\n";
+  if (p.window_step != defaults.window_step) {
+    std::cout << "WARNING: " << MSP_OPTION_FLAG(p, window_step)
+              << " is ignored (the window sampling step is " << MSP_OPTION_FLAG(m, window_step)
+              << ")\n";
   }
-  if (options.patch_match.num_iterations != defaults.num_iterations) {
-    std::cout << "WARNING: --PatchMatchStereo.num_iterations is ignored (the APD schedule runs "
-                 "3 red-black iterations per pass, 4 passes per round)\n";
+  if (!m.bilateral_ncc &&
+      (p.sigma_spatial != defaults.sigma_spatial || p.sigma_color != defaults.sigma_color)) {
+    std::cout << "WARNING: " << MSP_OPTION_FLAG(p, sigma_spatial) << " / "
+              << MSP_OPTION_FLAG(p, sigma_color) << " only apply with "
+              << MSP_OPTION_FLAG(m, bilateral_ncc) << " true\n";
   }
-  if (options.patch_match.ncc_sigma != defaults.ncc_sigma ||
-      options.patch_match.incident_angle_sigma != defaults.incident_angle_sigma) {
-    std::cout << "WARNING: --PatchMatchStereo.ncc_sigma / incident_angle_sigma are ignored "
-                 "(view selection follows ACMM, not COLMAP's likelihood model)\n";
+  if (p.num_iterations != defaults.num_iterations) {
+    std::cout << "WARNING: " << MSP_OPTION_FLAG(p, num_iterations)
+              << " is ignored (the APD schedule runs " << kIterationsPerPass
+              << " red-black iterations per pass: one photometric pass and, with "
+              << MSP_OPTION_FLAG(p, geom_consistency) << ", " << kNumGeometricPasses
+              << " geometric passes per round)\n";
   }
-  if (options.msp.segmentation_prior && !options.msp.deformable) {
-    std::cout << "WARNING: --MspStereo.segmentation_prior has no effect without "
-                 "--MspStereo.deformable (the prior confines the anchors of deformable patches)\n";
+  if (p.ncc_sigma != defaults.ncc_sigma ||
+      p.incident_angle_sigma != defaults.incident_angle_sigma) {
+    std::cout << "WARNING: " << MSP_OPTION_FLAG(p, ncc_sigma) << " / "
+              << MSP_OPTION_FLAG(p, incident_angle_sigma)
+              << " are ignored (view selection follows ACMM, not COLMAP's likelihood model)\n";
   }
-  if (options.msp.write_previews && !(options.msp.segmentation_prior && options.msp.deformable)) {
-    std::cout << "WARNING: --MspStereo.write_previews writes nothing: the segmentation prior "
-                 "does not run\n";
+  if (m.segmentation_prior && !m.deformable) {
+    std::cout << "WARNING: " << MSP_OPTION_FLAG(m, segmentation_prior) << " has no effect without "
+              << MSP_OPTION_FLAG(m, deformable)
+              << " (the prior confines the anchors of deformable patches)\n";
   }
-  if (options.msp.backend == "cpu" && options.patch_match.gpu_index != "-1") {
-    std::cout << "WARNING: --PatchMatchStereo.gpu_index is ignored by the cpu back-end\n";
+  if (m.write_previews && !(m.segmentation_prior && m.deformable)) {
+    std::cout << "WARNING: " << MSP_OPTION_FLAG(m, write_previews)
+              << " writes nothing: the segmentation prior does not run\n";
+  }
+  if (m.backend == "cpu" && p.gpu_index != defaults.gpu_index) {
+    std::cout << "WARNING: " << MSP_OPTION_FLAG(p, gpu_index)
+              << " is ignored by the cpu back-end\n";
   }
 }
 
@@ -86,6 +100,9 @@ int Run(int argc, char** argv) {
   const Workspace workspace = LoadWorkspace(options);
   std::cout << "  " << workspace.views.size() << " images, " << workspace.problems.size()
             << " problems" << std::endl;
+  // Before the first file is written: a back-end that cannot run leaves the
+  // workspace as it was.
+  CheckBackendCanRun(options.msp);
   WriteFusionConfigIfMissing(workspace);
 
   std::vector<std::string> names;

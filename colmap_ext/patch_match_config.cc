@@ -10,6 +10,8 @@
 
 #include "colmap_ext/errors.h"
 #include "colmap_ext/file_util.h"
+#include "options/option_name.h"
+#include "options/stereo_options.h"
 
 namespace msp {
 namespace {
@@ -52,8 +54,9 @@ struct NumberedLine {
 std::vector<PatchMatchConfigEntry> ParsePatchMatchConfig(const std::string& path) {
   if (!IsFile(path)) {
     throw InputError("patch-match config " + path +
-                     " does not exist (it is written by `colmap image_undistorter`; "
-                     "use --config_path to give another file)");
+                     " does not exist (it is written by `colmap image_undistorter`; use " +
+                     MSP_OPTION_FLAG_OF(StereoCommandOptions, config_path) +
+                     " to give another file)");
   }
   return ParsePatchMatchConfigText(ReadFileToString(path), path);
 }

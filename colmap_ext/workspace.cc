@@ -15,6 +15,7 @@
 #include "colmap_ext/image_loading.h"
 #include "colmap_ext/mask_layers.h"
 #include "colmap_ext/patch_match_config.h"
+#include "options/option_name.h"
 
 namespace msp {
 namespace {
@@ -39,7 +40,7 @@ void RequireFolder(const std::string& path, const std::string& what) {
 
 void CheckLayout(const StereoCommandOptions& options) {
   const std::string& ws = options.workspace_path;
-  if (ws.empty()) throw InputError("--workspace_path is required");
+  if (ws.empty()) throw InputError(MSP_OPTION_FLAG(options, workspace_path) + " is required");
   if (!IsDirectory(ws)) throw InputError("workspace " + ws + " does not exist or is not a folder");
   const std::string format = ToLower(options.workspace_format);
   if (format == "pmvs") {
@@ -137,8 +138,9 @@ std::vector<Problem> HandleMissingImages(std::vector<Problem> problems, const Wo
       missing[view] = IsFile(path) ? 0 : 1;
       if (missing[view] && !allow_missing_files) {
         throw InputError("image file " + path + " does not exist (image `" + ws.views[view].name +
-                         "` of the sparse model; --PatchMatchStereo.allow_missing_files 1 "
-                         "skips missing images)");
+                         "` of the sparse model; " +
+                         MSP_OPTION_FLAG_OF(PatchMatchStereoOptions, allow_missing_files) +
+                         " 1 skips missing images)");
       }
       if (missing[view]) Warn("image file " + path + " does not exist; ignoring it");
     }
@@ -167,8 +169,9 @@ void AssignDepthRanges(const PatchMatchStereoOptions& options, const Workspace& 
                        std::vector<Problem>* problems) {
   if (options.depth_min > 0.0 && options.depth_max > 0.0) {
     if (options.depth_min >= options.depth_max) {
-      throw InputError("--PatchMatchStereo.depth_min (" + std::to_string(options.depth_min) +
-                       ") must be smaller than --PatchMatchStereo.depth_max (" +
+      throw InputError(MSP_OPTION_FLAG(options, depth_min) + " (" +
+                       std::to_string(options.depth_min) + ") must be smaller than " +
+                       MSP_OPTION_FLAG(options, depth_max) + " (" +
                        std::to_string(options.depth_max) + ")");
     }
     for (Problem& problem : *problems) {
@@ -181,10 +184,10 @@ void AssignDepthRanges(const PatchMatchStereoOptions& options, const Workspace& 
   for (Problem& problem : *problems) {
     const auto& range = ranges[problem.ref];
     if (!(range.first > 0.0 && range.second > 0.0)) {
-      throw InputError(
-          "no depth range: set --PatchMatchStereo.depth_min/depth_max (the sparse model has no "
-          "points observed by " +
-          ws.views[problem.ref].name + ")");
+      throw InputError("no depth range: set " + MSP_OPTION_FLAG(options, depth_min) + " and " +
+                       MSP_OPTION_FLAG(options, depth_max) +
+                       " (the sparse model has no points observed by " +
+                       ws.views[problem.ref].name + ")");
     }
     problem.depth_min = static_cast<float>(range.first);
     problem.depth_max = static_cast<float>(range.second);

@@ -1,6 +1,7 @@
 #!/bin/sh
 # The command-line flow of the bundled scene: msp_make_scene -> msp_write_gt_maps
-# -> colmap stereo_fusion -> msp_evaluate --json, on a small scene.
+# -> colmap stereo_fusion -> msp_evaluate --json, on a small scene; then every
+# tool's --help and command-line errors.
 # Usage: cli_smoke_test.sh <bin_dir> <colmap>
 set -eu
 bin_dir=$1
@@ -28,5 +29,21 @@ for tool in msp_make_scene msp_write_gt_maps msp_evaluate; do
   grep -q '(=' "$ws/help.txt"
   if "$bin_dir/$tool" --no_such_option 1 2> "$ws/err.txt"; then exit 1; fi
   grep -q "^ERROR: unknown option \`--no_such_option\`" "$ws/err.txt"
+done
+# msp_convert_masks: help, and one ERROR line for an unknown or a missing option.
+"$bin_dir/msp_convert_masks" --help > "$ws/help.txt"
+grep -q -- '--input_path' "$ws/help.txt"
+if "$bin_dir/msp_convert_masks" --input_path a --no_such_option 1 2> "$ws/err.txt"; then exit 1; fi
+grep -q "^ERROR: unknown option \`--no_such_option\`" "$ws/err.txt"
+if "$bin_dir/msp_convert_masks" --input_path a 2> "$ws/err.txt"; then exit 1; fi
+grep -q "^ERROR: missing required option --output_path" "$ws/err.txt"
+# msp_bench_patch_match takes bare words (width height num_views [ncc]) and
+# checks them before running.
+"$bin_dir/msp_bench_patch_match" --help > "$ws/help.txt"
+grep -q -- '--width arg (=640)' "$ws/help.txt"
+for args in "64x 48 3" "0 48 3" "-64 48 3" "64 48 1" "64 48 3 fast" "64 48 3 ncc extra"; do
+  # shellcheck disable=SC2086
+  if "$bin_dir/msp_bench_patch_match" $args > /dev/null 2> "$ws/err.txt"; then exit 1; fi
+  grep -q '^ERROR: ' "$ws/err.txt"
 done
 echo "cli smoke test passed"

@@ -78,13 +78,17 @@ void CheckDepthRange(const PatchMatchStereoOptions& o) {
   // COLMAP: both -1 = per-image range from the sparse model; otherwise a
   // manual range with 0 <= min <= max.
   if (o.depth_min == -1.0 && o.depth_max == -1.0) return;
+  const std::string min_flag = MSP_OPTION_FLAG(o, depth_min);
+  const std::string max_flag = MSP_OPTION_FLAG(o, depth_max);
   if (!(o.depth_min >= 0.0)) {
     Fail(MSP_OPTION_NAME(o, depth_min), ToText(o.depth_min),
-         "-1 (automatic, with depth_max -1) or in [0, depth_max = " + ToText(o.depth_max) + "]");
+         "-1 (automatic, with " + max_flag + " -1) or in [0, " + max_flag + " = " +
+             ToText(o.depth_max) + "]");
   }
   if (!(o.depth_max >= o.depth_min)) {
-    Fail(MSP_OPTION_NAME(o, depth_max), ToText(o.depth_max),
-         "-1 (automatic, with depth_min -1) or >= depth_min = " + ToText(o.depth_min));
+    Fail(
+        MSP_OPTION_NAME(o, depth_max), ToText(o.depth_max),
+        "-1 (automatic, with " + min_flag + " -1) or >= " + min_flag + " = " + ToText(o.depth_min));
   }
 }
 
@@ -131,7 +135,7 @@ void CheckMspStereoOptions(const MspStereoOptions& o) {
 
 void CheckStereoCommandOptions(const StereoCommandOptions& o) {
   if (o.workspace_path.empty()) {
-    throw OptionError("missing required option --" + MSP_OPTION_NAME(o, workspace_path));
+    throw OptionError("missing required option " + MSP_OPTION_FLAG(o, workspace_path));
   }
   MSP_CHECK_ONE_OF(o, workspace_format, "COLMAP", "PMVS");
   CheckPatchMatchStereoOptions(o.patch_match);

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "core/prior/prior_limits.h"
+#include "options/command_line_common.h"
 #include "options/option_name.h"
 
 namespace msp {
@@ -94,9 +95,11 @@ class OptionTable {
 #define MSP_ADD_OPTION_NO_DEFAULT(table, options, field, help) \
   (table)->AddNoDefault(MSP_OPTION_NAME(options, field), &(options).field, help)
 
-// The one list of options. Help texts of the PatchMatchStereo options follow
-// the field comments of COLMAP's PatchMatchOptions.
-void DefineOptions(StereoCommandOptions* o, OptionTable* t) {
+// The options of each struct, in usage order. Help texts of the
+// PatchMatchStereo options follow the field comments of COLMAP's
+// PatchMatchOptions; a help text that points at another option spells it from
+// its field too (MSP_OPTION_FLAG).
+void DefineTopLevelOptions(StereoCommandOptions* o, OptionTable* t) {
   MSP_ADD_OPTION_NO_DEFAULT(t, *o, workspace_path,
                             "Dense workspace written by `colmap image_undistorter` (required).");
   MSP_ADD_OPTION(t, *o, workspace_format,
@@ -110,134 +113,149 @@ void DefineOptions(StereoCommandOptions* o, OptionTable* t) {
       t, *o, project_path,
       "Ini file with [PatchMatchStereo] and [MspStereo] sections; options given on the command "
       "line override it.");
-  MSP_ADD_OPTION(t, *o, random_seed,
-                 "COLMAP's global seed; used as --MspStereo.seed unless that is given.");
+  MSP_ADD_OPTION(
+      t, *o, random_seed,
+      "COLMAP's global seed; used as " + MSP_OPTION_FLAG(o->msp, seed) + " unless that is given.");
   MSP_ADD_OPTION(t, *o, log_to_stderr, "Accepted for compatibility with COLMAP; ignored.");
   MSP_ADD_OPTION(t, *o, log_level, "Accepted for compatibility with COLMAP; ignored.");
+}
 
-  PatchMatchStereoOptions& p = o->patch_match;
-  MSP_ADD_OPTION(t, p, max_image_size,
+void DefinePatchMatchStereoOptions(PatchMatchStereoOptions* p, OptionTable* t) {
+  const std::string bilateral_ncc = MSP_OPTION_FLAG_OF(MspStereoOptions, bilateral_ncc);
+  MSP_ADD_OPTION(t, *p, max_image_size,
                  "Maximum image size in either dimension; larger images, their intrinsics and the "
                  "output maps are downsized. -1 = full size.");
-  MSP_ADD_OPTION(t, p, gpu_index,
+  MSP_ADD_OPTION(t, *p, gpu_index,
                  "CUDA device indices separated by commas, e.g. \"0,1\"; -1 = all devices. "
-                 "Accepted, ignored: only the cuda back-end would use it (see "
-                 "--MspStereo.backend).");
-  MSP_ADD_OPTION(t, p, depth_min,
+                 "Accepted, ignored: only the cuda back-end would use it (see " +
+                     MSP_OPTION_FLAG_OF(MspStereoOptions, backend) + ").");
+  MSP_ADD_OPTION(t, *p, depth_min,
                  "Minimum depth of the random search; -1 = from the sparse points of each image.");
-  MSP_ADD_OPTION(t, p, depth_max,
+  MSP_ADD_OPTION(t, *p, depth_max,
                  "Maximum depth of the random search; -1 = from the sparse points of each image.");
-  MSP_ADD_OPTION(t, p, window_radius,
+  MSP_ADD_OPTION(t, *p, window_radius,
                  "Half window size of the photo-consistency (NCC) window, at most " +
                      std::to_string(kMaxWindowRadius) + ".");
-  MSP_ADD_OPTION(t, p, window_step,
+  MSP_ADD_OPTION(t, *p, window_step,
                  "Step between the pixels sampled inside the window (1 or 2). Accepted, ignored: "
-                 "the step is --MspStereo.window_step.");
-  MSP_ADD_OPTION(t, p, sigma_spatial,
-                 "Spatial sigma of the bilateral NCC weights; <= 0 = window_radius. Used with "
-                 "--MspStereo.bilateral_ncc true.");
-  MSP_ADD_OPTION(t, p, sigma_color,
-                 "Colour sigma of the bilateral NCC weights. Used with --MspStereo.bilateral_ncc "
-                 "true.");
-  MSP_ADD_OPTION(t, p, num_samples,
+                 "the step is " +
+                     MSP_OPTION_FLAG_OF(MspStereoOptions, window_step) + ".");
+  MSP_ADD_OPTION(t, *p, sigma_spatial,
+                 "Spatial sigma of the bilateral NCC weights; <= 0 = window_radius. Used with " +
+                     bilateral_ncc + " true.");
+  MSP_ADD_OPTION(
+      t, *p, sigma_color,
+      "Colour sigma of the bilateral NCC weights. Used with " + bilateral_ncc + " true.");
+  MSP_ADD_OPTION(t, *p, num_samples,
                  "Number of source views sampled per pixel to compute the matching cost.");
-  MSP_ADD_OPTION(t, p, ncc_sigma,
+  MSP_ADD_OPTION(t, *p, ncc_sigma,
                  "Spread of the NCC likelihood used in the view-selection probabilities. "
                  "Accepted, ignored: view selection follows ACMM.");
-  MSP_ADD_OPTION(t, p, min_triangulation_angle,
+  MSP_ADD_OPTION(t, *p, min_triangulation_angle,
                  "Minimum triangulation angle in degrees (__auto__ source selection).");
-  MSP_ADD_OPTION(t, p, incident_angle_sigma,
+  MSP_ADD_OPTION(t, *p, incident_angle_sigma,
                  "Spread of the incident-angle likelihood used in the view-selection "
                  "probabilities. Accepted, ignored: view selection follows ACMM.");
-  MSP_ADD_OPTION(t, p, num_iterations,
+  MSP_ADD_OPTION(t, *p, num_iterations,
                  "Number of coordinate-descent iterations. Accepted, ignored: every pass runs 3 "
                  "red-black iterations.");
-  MSP_ADD_OPTION(t, p, geom_consistency,
-                 "Add a second pass with geometric consistency against the source views' maps; "
-                 "writes *.geometric.bin besides the unfiltered *.photometric.bin.");
-  MSP_ADD_OPTION(t, p, geom_consistency_regularizer,
+  MSP_ADD_OPTION(t, *p, geom_consistency,
+                 "Geometric consistency against the source views' maps: every round runs 3 "
+                 "geometric passes after its photometric one; writes the filtered "
+                 "*.geometric.bin besides the unfiltered *.photometric.bin. false = the "
+                 "photometric pass alone, filtered into *.photometric.bin.");
+  MSP_ADD_OPTION(t, *p, geom_consistency_regularizer,
                  "Weight of the geometric consistency term relative to the photometric cost.");
   MSP_ADD_OPTION(
-      t, p, geom_consistency_max_cost,
+      t, *p, geom_consistency_max_cost,
       "Maximum geometric consistency cost in pixels (forward-backward reprojection error).");
-  MSP_ADD_OPTION(t, p, filter, "Filter the final depth and normal maps.");
-  MSP_ADD_OPTION(t, p, filter_min_ncc,
-                 "Minimum NCC (1 - cost) of a pixel to be kept by the filter.");
-  MSP_ADD_OPTION(t, p, filter_min_triangulation_angle,
-                 "Minimum triangulation angle in degrees of a pixel to be kept by the filter.");
-  MSP_ADD_OPTION(t, p, filter_min_num_consistent,
+  MSP_ADD_OPTION(t, *p, filter, "Filter the final depth and normal maps.");
+  MSP_ADD_OPTION(t, *p, filter_min_ncc,
+                 "Minimum NCC (1 - cost) of a source view to count as consistent in the filter.");
+  MSP_ADD_OPTION(t, *p, filter_min_triangulation_angle,
+                 "Minimum triangulation angle in degrees of a source view to count as consistent "
+                 "in the filter.");
+  MSP_ADD_OPTION(t, *p, filter_min_num_consistent,
                  "Minimum number of consistent source views of a pixel to be kept by the filter.");
-  MSP_ADD_OPTION(t, p, filter_geom_consistency_max_cost,
+  MSP_ADD_OPTION(t, *p, filter_geom_consistency_max_cost,
                  "Maximum forward-backward reprojection error in pixels for a source view to "
                  "count as consistent in the filter.");
-  MSP_ADD_OPTION(t, p, cache_size, "Memory budget in gigabytes for cached per-image state.");
-  MSP_ADD_OPTION(t, p, allow_missing_files,
+  MSP_ADD_OPTION(t, *p, cache_size, "Memory budget in gigabytes for cached per-image state.");
+  MSP_ADD_OPTION(t, *p, allow_missing_files,
                  "Skip missing images or maps of a problem instead of failing.");
-  MSP_ADD_OPTION(t, p, write_consistency_graph,
+  MSP_ADD_OPTION(t, *p, write_consistency_graph,
                  "Write the consistency graphs of the geometric pass. Accepted, ignored: none are "
                  "written (no COLMAP command reads them).");
-  MSP_ADD_OPTION(t, p, num_threads,
-                 "COLMAP >= 3.10 I/O thread count; accepted for compatibility and ignored (see "
-                 "--MspStereo.num_threads).");
+  MSP_ADD_OPTION(t, *p, num_threads,
+                 "COLMAP >= 3.10 I/O thread count; accepted for compatibility and ignored (see " +
+                     MSP_OPTION_FLAG_OF(MspStereoOptions, num_threads) + ").");
+}
 
-  MspStereoOptions& m = o->msp;
-  MSP_ADD_OPTION(t, m, backend,
+void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
+  MSP_ADD_OPTION(t, *m, backend,
                  "{cpu, cuda}. cuda is accepted, but msp_stereo then stops with an error after "
                  "reading the workspace: the CUDA back-end cannot run patch match yet.");
   MSP_ADD_OPTION(
-      t, m, seed,
+      t, *m, seed,
       "Seed of the counter-based random numbers (>= 0); a run is a pure function of it.");
-  MSP_ADD_OPTION(t, m, num_threads, "Worker threads of the cpu back-end; <= 0 = all cores.");
-  MSP_ADD_OPTION(t, m, mask_path,
+  MSP_ADD_OPTION(t, *m, num_threads, "Worker threads of the cpu back-end; <= 0 = all cores.");
+  MSP_ADD_OPTION(t, *m, mask_path,
                  "Folder of per-image segmentation mask layers; \"\" = <workspace>/masks.");
-  MSP_ADD_OPTION(t, m, coarsest_image_size,
+  MSP_ADD_OPTION(t, *m, coarsest_image_size,
                  "Coarse-to-fine rounds halve the images until the larger side is at most this "
                  "many pixels; one round when the images are already that small.");
-  MSP_ADD_OPTION(t, m, window_step,
+  MSP_ADD_OPTION(t, *m, window_step,
                  "{1, 2}. Sampling step inside the matching window (2 = the paper's every other "
-                 "row and column); replaces --PatchMatchStereo.window_step.");
-  MSP_ADD_OPTION(t, m, bilateral_ncc,
+                 "row and column); replaces " +
+                     MSP_OPTION_FLAG_OF(PatchMatchStereoOptions, window_step) + ".");
+  MSP_ADD_OPTION(t, *m, bilateral_ncc,
                  "Weight the NCC window bilaterally (COLMAP's sigma_spatial / sigma_color) "
                  "instead of uniformly (APD-MVS).");
-  MSP_ADD_OPTION(t, m, deformable,
+  MSP_ADD_OPTION(t, *m, deformable,
                  "Deformable patch matching (APD-MVS): unreliable pixels match over reliable "
                  "anchors; false = the conventional PatchMatch core alone.");
-  MSP_ADD_OPTION(t, m, reliable_max_cost,
+  MSP_ADD_OPTION(t, *m, reliable_max_cost,
                  "[0, 2]. A pixel whose lowest disparity-curve minimum costs more is unreliable.");
-  MSP_ADD_OPTION(t, m, reliable_single_cost,
+  MSP_ADD_OPTION(t, *m, reliable_single_cost,
                  "[0, 2]. A single curve minimum makes the pixel reliable at or below this cost.");
   MSP_ADD_OPTION(
-      t, m, reliable_min_spread,
+      t, *m, reliable_min_spread,
       "[0, 2]. With several curve minima, the others must lie this far above the lowest.");
-  MSP_ADD_OPTION(t, m, anchor_max_distance,
+  MSP_ADD_OPTION(t, *m, anchor_max_distance,
                  "Anchor search range in pixels of the current round (>= 2).");
-  MSP_ADD_OPTION(t, m, segmentation_prior,
-                 "Confine anchors by the multi-granularity segmentation prior (mask layers from "
-                 "--MspStereo.mask_path, else the embedded segmenter): after each deformable pass "
-                 "its depth edges are recomputed, and later passes take no anchor across them; "
-                 "needs --MspStereo.deformable. false = w/o Mul. (APD-MVS).");
-  MSP_ADD_OPTION(t, m, edge_aggregation,
+  MSP_ADD_OPTION(t, *m, segmentation_prior,
+                 "Confine anchors by the multi-granularity segmentation prior (mask layers from " +
+                     MSP_OPTION_FLAG(*m, mask_path) +
+                     ", else the embedded segmenter): after each deformable pass its depth edges "
+                     "are recomputed, and later passes take no anchor across them; needs " +
+                     MSP_OPTION_FLAG(*m, deformable) + ". false = w/o Mul. (APD-MVS).");
+  MSP_ADD_OPTION(t, *m, edge_aggregation,
                  "Aggregate the mask layers per region by their best anchor subsets (eqs. 4-5); "
                  "false = the union of all layers' boundaries (w/o Agr.).");
-  MSP_ADD_OPTION(t, m, edge_refinement,
+  MSP_ADD_OPTION(t, *m, edge_refinement,
                  "Refine the aggregated edges with the colour/depth CRF (eq. 6); false = w/o Ref.");
-  MSP_ADD_OPTION(t, m, num_mask_levels,
+  MSP_ADD_OPTION(t, *m, num_mask_levels,
                  "Label layers of the embedded segmenter for images without mask files (1.." +
                      std::to_string(core::kMaxLabelLayers) + "); mask files set their own count.");
-  MSP_ADD_OPTION(t, m, write_previews,
+  MSP_ADD_OPTION(t, *m, write_previews,
                  "Write stereo/prior_previews/<image>.png with the aggregated (red) and refined "
                  "(green) edges that confined the final pass, over the image.");
-  MSP_ADD_OPTION(t, m, crf_alpha,
+  MSP_ADD_OPTION(t, *m, crf_alpha,
                  "(0, inf). CRF depth bandwidth as a fraction of the depth range (eq. 6 alpha).");
   MSP_ADD_OPTION(
-      t, m, crf_beta,
+      t, *m, crf_beta,
       "(0, inf). CRF colour bandwidth on |I_p . I_q - 1| of normalised RGB (eq. 6 beta).");
-  MSP_ADD_OPTION(t, m, crf_unary_confidence,
+  MSP_ADD_OPTION(t, *m, crf_unary_confidence,
                  "(0, 1). Probability the CRF unary gives the aggregated label.");
-  MSP_ADD_OPTION(t, m, crf_iterations, "Mean-field iterations of the CRF (>= 1).");
+  MSP_ADD_OPTION(t, *m, crf_iterations, "Mean-field iterations of the CRF (>= 1).");
 }
 
-bool IsHelpFlag(const std::string& arg) { return arg == "-h" || arg == "--help"; }
+// The one list of options: the top-level ones, then each section's.
+void DefineOptions(StereoCommandOptions* o, OptionTable* t) {
+  DefineTopLevelOptions(o, t);
+  DefinePatchMatchStereoOptions(&o->patch_match, t);
+  DefineMspStereoOptions(&o->msp, t);
+}
 
 bool StartsWith(const std::string& text, const std::string& prefix) {
   return text.compare(0, prefix.size(), prefix) == 0;
@@ -247,15 +265,15 @@ bool StartsWith(const std::string& text, const std::string& prefix) {
 // win, because boost's store() never overwrites a stored value.
 void StoreIniFile(const std::string& path, const po::options_description& description,
                   po::variables_map* vm) {
+  const std::string in_file =
+      MSP_OPTION_FLAG_OF(StereoCommandOptions, project_path) + " file `" + path + "`";
   std::ifstream file(path);
-  if (!file) {
-    throw OptionError("cannot open --project_path file `" + path + "`");
-  }
+  if (!file) throw OptionError("cannot open " + in_file);
   po::parsed_options parsed(&description);
   try {
     parsed = po::parse_config_file(file, description, /*allow_unregistered=*/true);
   } catch (const po::error& e) {
-    throw OptionError("in --project_path file `" + path + "`: " + e.what());
+    throw OptionError("in " + in_file + ": " + e.what());
   }
   std::vector<po::option> known;
   for (const po::option& option : parsed.options) {
@@ -267,15 +285,14 @@ void StoreIniFile(const std::string& path, const po::options_description& descri
     // one of our sections that we do not know is a typo.
     if (StartsWith(option.string_key, std::string(PatchMatchStereoOptions::kSection) + ".") ||
         StartsWith(option.string_key, std::string(MspStereoOptions::kSection) + ".")) {
-      throw OptionError("unknown option `" + option.string_key + "` in --project_path file `" +
-                        path + "`");
+      throw OptionError("unknown option `" + option.string_key + "` in " + in_file);
     }
   }
   parsed.options = std::move(known);
   try {
     po::store(parsed, *vm);
   } catch (const po::error& e) {
-    throw OptionError("in --project_path file `" + path + "`: " + e.what());
+    throw OptionError("in " + in_file + ": " + e.what());
   }
 }
 
@@ -288,51 +305,24 @@ std::string ToUpper(std::string text) {
 }  // namespace
 
 ParseStatus ParseStereoCommand(int argc, const char* const argv[], StereoCommandOptions* options) {
-  // Help wins over everything else, including unknown options next to it.
-  for (int i = 1; i < argc; ++i) {
-    if (IsHelpFlag(argv[i])) return ParseStatus::kHelp;
-  }
+  if (command_line::HasHelpFlag(argc, argv)) return ParseStatus::kHelp;
 
   po::options_description description;
   OptionTable table(&description);
   DefineOptions(options, &table);
 
+  // COLMAP commands take no bare words (positional options).
   po::variables_map vm;
-  try {
-    // No prefix guessing: an abbreviated or misspelt name is reported as
-    // unknown instead of silently matching some other option.
-    const int style = po::command_line_style::unix_style & ~po::command_line_style::allow_guessing;
-    const po::parsed_options parsed =
-        po::command_line_parser(argc, argv).options(description).style(style).run();
-    // boost silently drops bare words; COLMAP commands take none, so a stray
-    // word is almost certainly a value whose option name was mistyped.
-    for (const po::option& option : parsed.options) {
-      if (option.position_key >= 0) {
-        throw OptionError("unexpected argument `" + option.original_tokens.front() +
-                          "` (options are --name value; run with --help to list them)");
-      }
-    }
-    po::store(parsed, vm);
-  } catch (const po::unknown_option& e) {
-    throw OptionError("unknown option `" + e.get_option_name() +
-                      "` (run with --help to list the options)");
-  } catch (const po::error& e) {
-    throw OptionError(e.what());
-  }
-
+  command_line::StoreCommandLine(argc, argv, description, /*positional=*/{}, &vm);
   const std::string project_key = MSP_OPTION_NAME(*options, project_path);
   if (vm.count(project_key) && !vm[project_key].as<std::string>().empty()) {
     StoreIniFile(vm[project_key].as<std::string>(), description, &vm);
   }
-  try {
-    po::notify(vm);
-  } catch (const po::error& e) {
-    throw OptionError(e.what());
-  }
+  command_line::NotifyOptions(&vm);
 
   const std::string workspace_key = MSP_OPTION_NAME(*options, workspace_path);
   if (!vm.count(workspace_key) || options->workspace_path.empty()) {
-    throw OptionError("missing required option --" + workspace_key);
+    throw OptionError("missing required option " + MSP_OPTION_FLAG(*options, workspace_path));
   }
   if (vm[MSP_OPTION_NAME(options->msp, seed)].defaulted() &&
       !vm[MSP_OPTION_NAME(*options, random_seed)].defaulted()) {
@@ -351,8 +341,8 @@ std::string StereoCommandUsage() {
       "`colmap patch_match_stereo`. Options come from the command line or from the\n"
       "[PatchMatchStereo] / [MspStereo] sections of a --project_path ini file; the\n"
       "command line overrides the ini file.\n\nOptions",
-      /*line_length=*/100, /*min_description_length=*/50);
-  description.add_options()("help,h", "Print this help and exit.");
+      command_line::kHelpLineLength, command_line::kHelpMinDescriptionLength);
+  command_line::AddHelpOption(&description);
   OptionTable table(&description);
   DefineOptions(&options, &table);
   std::ostringstream stream;

@@ -53,7 +53,8 @@ struct PatchMatchStereoOptions {
   double incident_angle_sigma = 0.9;
   // accepted, ignored: COLMAP's iteration count; each pass runs 3 red-black iterations.
   int num_iterations = 5;
-  // Geometric passes after the photometric one; writes *.geometric.bin (else *.photometric.bin).
+  // 3 geometric passes per round after the photometric one; writes *.geometric.bin (else only
+  // *.photometric.bin).
   bool geom_consistency = true;
   // Weight (unitless) of the reprojection error against the photometric cost (1 - NCC).
   double geom_consistency_regularizer = 0.3;

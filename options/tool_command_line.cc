@@ -5,15 +5,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "options/command_line_common.h"
+
 namespace msp {
 namespace {
 
 namespace po = boost::program_options;
-
-// The help text's layout, as msp_stereo's: 100 columns, descriptions from
-// column 50 at most.
-constexpr unsigned kHelpLineLength = 100;
-constexpr unsigned kHelpMinDescriptionLength = 50;
 
 std::string ToText(const std::string& value) { return value.empty() ? "\"\"" : value; }
 template <typename T>
@@ -42,22 +39,23 @@ uint64_t ParseUnsigned(const std::string& name, const std::string& text) {
   }
 }
 
-bool IsHelpFlag(const std::string& arg) { return arg == "-h" || arg == "--help"; }
-
 }  // namespace
 
 struct ToolCommandLine::Impl {
   po::options_description description;
   // Applied after parsing: the value-less flags, which boost stores no value for.
   std::vector<std::function<void(const po::variables_map&)>> flags;
+  // The options that bare words fill, in order.
+  std::vector<std::string> positional;
 
   explicit Impl(const std::string& caption)
-      : description(caption, kHelpLineLength, kHelpMinDescriptionLength) {}
+      : description(caption, command_line::kHelpLineLength,
+                    command_line::kHelpMinDescriptionLength) {}
 };
 
 ToolCommandLine::ToolCommandLine(const std::string& usage, const std::string& summary)
     : impl_(std::make_unique<Impl>(usage + "\n\n" + summary + "\n\nOptions")) {
-  impl_->description.add_options()("help,h", "Print this help and exit.");
+  command_line::AddHelpOption(&impl_->description);
 }
 
 ToolCommandLine::~ToolCommandLine() = default;
@@ -126,36 +124,22 @@ void ToolCommandLine::AddFlag(const std::string& name, bool* field, bool value_w
   });
 }
 
-ParseStatus ToolCommandLine::Parse(int argc, const char* const argv[]) const {
-  // Help wins over everything else, including unknown options next to it.
-  for (int i = 1; i < argc; ++i) {
-    if (IsHelpFlag(argv[i])) return ParseStatus::kHelp;
-  }
-  po::variables_map vm;
-  try {
-    // No prefix guessing: an abbreviated or misspelt name is reported as
-    // unknown instead of silently matching some other option.
-    const int style = po::command_line_style::unix_style & ~po::command_line_style::allow_guessing;
-    const po::parsed_options parsed =
-        po::command_line_parser(argc, argv).options(impl_->description).style(style).run();
-    // boost silently drops bare words; the tools take none, so a stray word
-    // is almost certainly a value whose option name was mistyped.
-    for (const po::option& option : parsed.options) {
-      if (option.position_key >= 0) {
-        throw OptionError("unexpected argument `" + option.original_tokens.front() +
-                          "` (options are --name value; run with --help to list them)");
-      }
+void ToolCommandLine::SetPositional(const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
+    const po::option_description* option = impl_->description.find_nothrow(name, /*approx=*/false);
+    if (option == nullptr || option->semantic()->max_tokens() == 0) {
+      throw std::invalid_argument("ToolCommandLine: positional option --" + name +
+                                  " is not a declared option with a value");
     }
-    po::store(parsed, vm);
-    po::notify(vm);
-  } catch (const po::unknown_option& e) {
-    throw OptionError("unknown option `" + e.get_option_name() +
-                      "` (run with --help to list the options)");
-  } catch (const po::required_option& e) {
-    throw OptionError("missing required option " + e.get_option_name());
-  } catch (const po::error& e) {
-    throw OptionError(e.what());
   }
+  impl_->positional = names;
+}
+
+ParseStatus ToolCommandLine::Parse(int argc, const char* const argv[]) const {
+  if (command_line::HasHelpFlag(argc, argv)) return ParseStatus::kHelp;
+  po::variables_map vm;
+  command_line::StoreCommandLine(argc, argv, impl_->description, impl_->positional, &vm);
+  command_line::NotifyOptions(&vm);
   for (const auto& apply : impl_->flags) apply(vm);
   return ParseStatus::kRun;
 }

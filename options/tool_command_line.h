@@ -1,12 +1,15 @@
 // The command line of the bundled tools (msp_make_scene, msp_write_gt_maps,
-// msp_evaluate), on Boost.Program_options like msp_stereo's: each option is
-// declared once with its field, help text and default (the field's value on
-// entry), and the same declarations parse the arguments and print --help.
+// msp_evaluate, msp_convert_masks, msp_bench_patch_match), on
+// Boost.Program_options like msp_stereo's and sharing its rules
+// (command_line_common.h): each option is declared once with its field, help
+// text and default (the field's value on entry), and the same declarations
+// parse the arguments and print --help.
 //
 // Options take `--name value` or `--name=value`; names must be spelt in full
 // (no prefix guessing); an unknown option, a malformed or missing value, a
-// repeated option, a bare word or a missing required option throws
-// OptionError naming it. Value ranges are the tools' own checks.
+// repeated option, a bare word (unless positional options take it) or a
+// missing required option throws OptionError naming it. Value ranges are the
+// tools' own checks.
 #pragma once
 
 #include <cstdint>
@@ -44,6 +47,12 @@ class ToolCommandLine {
   // An option without a value: when given, *field becomes `value_when_given`.
   void AddFlag(const std::string& name, bool* field, bool value_when_given,
                const std::string& help);
+
+  // Bare words fill these options (declared already, each taking a value) in
+  // order: with {"width", "height"}, `tool 640 480` is `tool --width 640
+  // --height 480`. A word beyond them is an error; so is an option given
+  // both ways. Throws std::invalid_argument for an undeclared name.
+  void SetPositional(const std::vector<std::string>& names);
 
   // Parses `argv` (argv[0] is the program name) into the fields. Returns
   // kHelp, touching no field, when -h or --help is among the arguments.

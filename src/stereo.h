@@ -32,9 +32,15 @@ class MapSink {
                                  const std::vector<uint8_t>& /*refined_edges*/) {}
 };
 
+// Throws std::runtime_error when the back-end of --MspStereo.backend cannot
+// run; a command calls it before writing anything, so that nothing partial is
+// left behind.
+void CheckBackendCanRun(const MspStereoOptions& msp);
+
 // Runs the configured back-end. `scratch_dir` is where per-image state may be
 // spilled when it exceeds --PatchMatchStereo.cache_size. Throws
-// std::runtime_error when the requested back-end is not available.
+// std::runtime_error when the requested back-end is not available
+// (CheckBackendCanRun).
 void RunStereo(const std::vector<View>& views, const std::vector<Problem>& problems,
                const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
                const std::string& scratch_dir, MapSink& sink);

@@ -1,11 +1,13 @@
 #!/bin/sh
-# Command-line behaviour of the msp_stereo executable: help, option errors and
-# a missing workspace give the documented exit codes and one-line errors.
-# Usage: msp_stereo_cli_test.sh <msp_stereo> <colmap dispatcher next to it>
+# Command-line behaviour of the msp_stereo executable: help, option errors,
+# a missing workspace and a back-end that cannot run give the documented exit
+# codes and one-line errors, and leave nothing behind.
+# Usage: msp_stereo_cli_test.sh <msp_stereo> <colmap dispatcher next to it> <msp_make_scene>
 set -u
-[ $# -eq 2 ] || { echo "usage: $0 <msp_stereo> <colmap dispatcher>" >&2; exit 2; }
+[ $# -eq 3 ] || { echo "usage: $0 <msp_stereo> <colmap dispatcher> <msp_make_scene>" >&2; exit 2; }
 MSP=$1
 DISPATCHER=$2
+MAKE_SCENE=$3
 readonly LIMIT=30
 . "$(dirname "$0")/../support/checks.sh"
 # run ARGS...: sets rc, out (stdout) and err (stderr).
@@ -50,6 +52,22 @@ expect_eq "missing workspace: one stderr line" "$(printf '%s\n' "$err" | wc -l)"
 expect_contains "start-up print: quoted path" "$out" "--workspace_path '$missing'"
 expect_contains "start-up print: a default" "$out" "--PatchMatchStereo.window_radius 5"
 expect_contains "start-up print: an own option" "$out" "--MspStereo.backend cpu"
+
+# The cuda back-end cannot run: msp_stereo reads the workspace, then stops
+# before writing anything (not even the stereo/fusion.cfg it writes when missing).
+ws="$TMP/scene"
+if "$MAKE_SCENE" --output "$ws" --width 64 --height 64 --num_cameras 3 >"$TMP/scene.log" 2>&1; then
+  rm "$ws/stereo/fusion.cfg"
+  before=$(ls -R "$ws")
+  run "$MSP" --workspace_path "$ws" --MspStereo.backend cuda
+  expect_error "cuda back-end" "--MspStereo.backend cuda: the CUDA back-end cannot run"
+  expect_contains "cuda back-end: the workspace is read first" "$out" "Reading workspace"
+  [ ! -e "$ws/stereo/fusion.cfg" ] && pass "cuda back-end: no fusion.cfg written" ||
+    fail "cuda back-end: no fusion.cfg written"
+  expect_eq "cuda back-end: the workspace is unchanged" "$(ls -R "$ws")" "$before"
+else
+  fail "msp_make_scene writes a workspace"; cat "$TMP/scene.log"
+fi
 
 # The same binary through the dispatcher next to it.
 run env PATH=/usr/bin:/bin "$DISPATCHER" msp_stereo --help

@@ -291,8 +291,9 @@ TEST(Workspace, EmptyPointsNeedDepthRange) {
   tiny.WriteModel();
   tiny.WriteConfig("sub/img0.png\n__all__\n");
   EXPECT_CONTAINS(tiny.LoadError(),
-                  "no depth range: set --PatchMatchStereo.depth_min/depth_max (the sparse model "
-                  "has no points observed by sub/img0.png)");
+                  "no depth range: set --PatchMatchStereo.depth_min and "
+                  "--PatchMatchStereo.depth_max (the sparse model has no points observed by "
+                  "sub/img0.png)");
 
   StereoCommandOptions options = tiny.Options();
   options.patch_match.depth_min = 2.0;

@@ -60,19 +60,19 @@ TEST(OptionCheck, EveryOutOfRangeValueNamesOptionValueAndRange) {
        [](auto* o) { o->patch_match.window_step = 0; }},
       {"PatchMatchStereo.window_step", "3", "[1, 2]",
        [](auto* o) { o->patch_match.window_step = 3; }},
-      {"PatchMatchStereo.depth_min", "-0.5", "-1",
+      {"PatchMatchStereo.depth_min", "-0.5", "-1 (automatic, with --PatchMatchStereo.depth_max -1)",
        [](auto* o) {
          o->patch_match.depth_min = -0.5;
          o->patch_match.depth_max = 2;
        }},
-      {"PatchMatchStereo.depth_min", "-1", "depth_max = 5",
+      {"PatchMatchStereo.depth_min", "-1", "[0, --PatchMatchStereo.depth_max = 5]",
        [](auto* o) { o->patch_match.depth_max = 5; }},
-      {"PatchMatchStereo.depth_max", "1", ">= depth_min = 2",
+      {"PatchMatchStereo.depth_max", "1", ">= --PatchMatchStereo.depth_min = 2",
        [](auto* o) {
          o->patch_match.depth_min = 2;
          o->patch_match.depth_max = 1;
        }},
-      {"PatchMatchStereo.depth_max", "-1", ">= depth_min = 2",
+      {"PatchMatchStereo.depth_max", "-1", ">= --PatchMatchStereo.depth_min = 2",
        [](auto* o) { o->patch_match.depth_min = 2; }},
       {"PatchMatchStereo.sigma_color", "0", "> 0", [](auto* o) { o->patch_match.sigma_color = 0; }},
       {"PatchMatchStereo.num_samples", "0", "> 0", [](auto* o) { o->patch_match.num_samples = 0; }},

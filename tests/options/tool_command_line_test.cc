@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -117,6 +118,80 @@ TEST_F(ToolCommandLineTest, RejectsBadCommandLinesNamingTheOption) {
   EXPECT_EQ(ParseError({"--workspace", "ws", "stray"}),
             "unexpected argument `stray` (options are --name value; run with --help to list "
             "them)");
+}
+
+// A tool whose options may also be given as bare words, in order, like
+// `msp_bench_patch_match 640 480 10 ncc`.
+class PositionalCommandLineTest : public ::testing::Test {
+ protected:
+  PositionalCommandLineTest() : command_line_("Usage: bench [width height [mode]]", "A bench.") {
+    command_line_.Add("width", &width_, "Width.");
+    command_line_.Add("height", &height_, "Height.");
+    command_line_.AddChoice("mode", &mode_, {"all", "ncc"}, "Mode.");
+    command_line_.SetPositional({"width", "height", "mode"});
+  }
+
+  std::string ParseError(std::vector<std::string> args) {
+    args.insert(args.begin(), "bench");
+    std::vector<const char*> argv;
+    for (const std::string& arg : args) argv.push_back(arg.c_str());
+    try {
+      command_line_.Parse(static_cast<int>(argv.size()), argv.data());
+    } catch (const OptionError& e) {
+      return e.what();
+    }
+    return "";
+  }
+
+  int width_ = 640;
+  int height_ = 480;
+  std::string mode_ = "all";
+  ToolCommandLine command_line_;
+};
+
+TEST_F(PositionalCommandLineTest, BareWordsFillTheOptionsInOrder) {
+  EXPECT_EQ(ParseError({"320", "240", "ncc"}), "");
+  EXPECT_EQ(width_, 320);
+  EXPECT_EQ(height_, 240);
+  EXPECT_EQ(mode_, "ncc");
+}
+
+TEST_F(PositionalCommandLineTest, FewerWordsKeepTheOtherDefaults) {
+  EXPECT_EQ(ParseError({"320"}), "");
+  EXPECT_EQ(width_, 320);
+  EXPECT_EQ(height_, 480);
+  EXPECT_EQ(mode_, "all");
+}
+
+TEST_F(PositionalCommandLineTest, NamedOptionsStillWork) {
+  EXPECT_EQ(ParseError({"320", "--mode", "ncc"}), "");
+  EXPECT_EQ(width_, 320);
+  EXPECT_EQ(mode_, "ncc");
+}
+
+TEST_F(PositionalCommandLineTest, NegativeNumbersAreValues) {
+  // Ranges are the tool's checks; a negative number is not an unknown option.
+  EXPECT_EQ(ParseError({"-320", "240"}), "");
+  EXPECT_EQ(width_, -320);
+}
+
+TEST_F(PositionalCommandLineTest, BadWordsAreErrorsNamingTheOption) {
+  EXPECT_NE(ParseError({"wide"}).find("--width"), std::string::npos);
+  EXPECT_NE(ParseError({"320", "2.5"}).find("--height"), std::string::npos);
+  EXPECT_EQ(ParseError({"320", "240", "fast"}), "--mode must be one of all, ncc, not `fast`");
+  EXPECT_EQ(ParseError({"320", "240", "ncc", "extra"}),
+            "unexpected argument `extra` (options are --name value; run with --help to list "
+            "them)");
+  EXPECT_NE(ParseError({"320", "--width", "640"}).find("--width"), std::string::npos);
+  EXPECT_NE(ParseError({"--widht", "640"}).find("unknown option `--widht`"), std::string::npos);
+}
+
+TEST(ToolCommandLine, PositionalOptionsMustBeDeclaredWithAValue) {
+  ToolCommandLine command_line("Usage: tool", "A tool.");
+  bool flag = false;
+  command_line.AddFlag("flag", &flag, true, "Flag.");
+  EXPECT_THROW(command_line.SetPositional({"width"}), std::invalid_argument);
+  EXPECT_THROW(command_line.SetPositional({"flag"}), std::invalid_argument);
 }
 
 }  // namespace

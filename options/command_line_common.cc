@@ -1,0 +1,67 @@
+#include "options/command_line_common.h"
+
+#include "options/option_parser.h"
+
+namespace msp {
+namespace command_line {
+namespace {
+
+namespace po = boost::program_options;
+
+[[noreturn]] void ThrowOptionError(const po::error& error) {
+  if (const auto* unknown = dynamic_cast<const po::unknown_option*>(&error)) {
+    throw OptionError("unknown option `" + unknown->get_option_name() +
+                      "` (run with --help to list the options)");
+  }
+  if (const auto* required = dynamic_cast<const po::required_option*>(&error)) {
+    throw OptionError("missing required option " + required->get_option_name());
+  }
+  throw OptionError(error.what());
+}
+
+}  // namespace
+
+void AddHelpOption(po::options_description* description) {
+  description->add_options()("help,h", "Print this help and exit.");
+}
+
+bool HasHelpFlag(int argc, const char* const argv[]) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") return true;
+  }
+  return false;
+}
+
+void StoreCommandLine(int argc, const char* const argv[],
+                      const po::options_description& description,
+                      const std::vector<std::string>& positional, po::variables_map* vm) {
+  int style = po::command_line_style::unix_style & ~po::command_line_style::allow_guessing;
+  if (!positional.empty()) style &= ~po::command_line_style::allow_short;
+  try {
+    po::parsed_options parsed =
+        po::command_line_parser(argc, argv).options(description).style(style).run();
+    for (po::option& option : parsed.options) {
+      if (option.position_key < 0) continue;
+      if (option.position_key >= static_cast<int>(positional.size())) {
+        throw OptionError("unexpected argument `" + option.original_tokens.front() +
+                          "` (options are --name value; run with --help to list them)");
+      }
+      option.string_key = positional[option.position_key];
+    }
+    po::store(parsed, *vm);
+  } catch (const po::error& e) {
+    ThrowOptionError(e);
+  }
+}
+
+void NotifyOptions(po::variables_map* vm) {
+  try {
+    po::notify(*vm);
+  } catch (const po::error& e) {
+    ThrowOptionError(e);
+  }
+}
+
+}  // namespace command_line
+}  // namespace msp

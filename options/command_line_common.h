@@ -1,0 +1,43 @@
+// What msp_stereo's command line (option_parser.cc) and the bundled tools'
+// (tool_command_line.cc) share, so both behave alike: the help check, the
+// help layout, full option names only, no stray words, and boost's errors
+// turned into OptionError. Internal to msp_options: it exposes
+// Boost.Program_options, which the public headers keep out of sight.
+#pragma once
+
+#include <boost/program_options.hpp>
+#include <string>
+#include <vector>
+
+namespace msp {
+namespace command_line {
+
+// The help text's layout: 100 columns, descriptions from column 50 at most.
+constexpr unsigned kHelpLineLength = 100;
+constexpr unsigned kHelpMinDescriptionLength = 50;
+
+// Lists -h / --help in a help text.
+void AddHelpOption(boost::program_options::options_description* description);
+
+// True when -h or --help is among the arguments (argv[0] is the program
+// name). Help wins over everything else, unknown options next to it included.
+bool HasHelpFlag(int argc, const char* const argv[]);
+
+// Parses the arguments into `vm` (without notifying the fields). Option names
+// must be spelt in full: an abbreviated or misspelt name is unknown instead of
+// silently matching some other option. Bare words fill the options named in
+// `positional`, in order; with none, a bare word is an error (boost would drop
+// it silently, and it is almost certainly a value whose option name was
+// mistyped). With positional options a word starting with one dash is a
+// value (a negative number), since no option has a one-letter form but -h.
+// Throws OptionError.
+void StoreCommandLine(int argc, const char* const argv[],
+                      const boost::program_options::options_description& description,
+                      const std::vector<std::string>& positional,
+                      boost::program_options::variables_map* vm);
+
+// boost::program_options::notify, with boost's errors as OptionError.
+void NotifyOptions(boost::program_options::variables_map* vm);
+
+}  // namespace command_line
+}  // namespace msp

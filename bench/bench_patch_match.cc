@@ -20,6 +20,7 @@
 #include "options/tool_command_line.h"
 #include "patch_match/pixel_state.h"
 #include "patch_match/sweeps.h"
+#include "tests/support/deformable_costs.h"
 #include "tests/support/synthetic_views.h"
 
 namespace msp {
@@ -186,7 +187,7 @@ void BenchDeformableCost(const core::PassParams& p, int width, int height) {
       }
       double t1 = ThreadCpuSeconds();
       seconds[0] += t1 - t0;
-      for (int j = 0; j < p.num_src; ++j) sink += core::DeformableViewCost(p, w, j, plane, d);
+      for (int j = 0; j < p.num_src; ++j) sink += test::DeformableViewCost(p, w, j, plane, d);
       seconds[1] += ThreadCpuSeconds() - t1;
       evaluations += p.num_src;
     }

@@ -14,8 +14,8 @@
 #include "base/parallel_for.h"
 #include "base/seconds_since.h"
 #include "core/patch_match/output_filter.h"
+#include "deformable/deformable_pass.h"
 #include "deformable/deformable_sweeps.h"
-#include "deformable/nearest_reliable.h"
 #include "patch_match/image_pyramid.h"
 #include "patch_match/pass_schedule.h"
 #include "patch_match/state_cache.h"
@@ -84,7 +84,8 @@ class CpuRunner {
         msp_(msp),
         sink_(sink),
         threads_(ResolveNumThreads(msp.num_threads)),
-        cache_(static_cast<size_t>(pm.cache_size * kBytesPerGigabyte), scratch_dir) {
+        cache_(static_cast<size_t>(pm.cache_size * kBytesPerGigabyte), scratch_dir),
+        deformable_(msp, threads_) {
     if (SegmentationPriorEnabled(msp)) prior_.reset(new PriorDriver(views, msp, threads_));
   }
 
@@ -241,7 +242,8 @@ class CpuRunner {
     MedianFilterState(params, threads_);
     if (pass.refine_classifies) {
       // The next pass of the round starts with the classes of these planes.
-      state.classes = LocalRefineAndClassifyState(params, ReliabilityAfter(pass.index), threads_);
+      state.classes =
+          LocalRefineAndClassifyState(params, ReliabilityAfter(pass.index, msp_), threads_);
     } else {
       LocalRefineState(params, threads_);
     }
@@ -263,75 +265,18 @@ class CpuRunner {
     std::fflush(stdout);
   }
 
-  // The classification parameters after pass `finished_pass` of a round.
-  core::ReliabilityParams ReliabilityAfter(int finished_pass) const {
-    core::ReliabilityParams reliability = core::DefaultReliabilityParams(finished_pass);
-    reliability.max_minimum_cost = static_cast<float>(msp_.reliable_max_cost);
-    reliability.single_min_cost = static_cast<float>(msp_.reliable_single_cost);
-    reliability.min_spread = static_cast<float>(msp_.reliable_min_spread);
-    return reliability;
-  }
-
-  // The reliability maps the deformable step starts with: the classes the
-  // previous pass's local refinement left in `state`, or (at a round start)
-  // the state classified here.
-  ReliabilityMaps StartReliability(const Pass& pass, const core::PassParams& params,
-                                   PixelState* state) {
-    std::vector<uint8_t> classes = std::move(state->classes);
-    state->classes.clear();
-    if ((pass.classify_after < 0) == classes.empty()) {
-      throw std::logic_error("pass schedule and reliability classes of the state disagree");
-    }
-    if (pass.classify_after >= 0) {
-      return ClassifyState(params, ReliabilityAfter(pass.classify_after), threads_);
-    }
-    return MakeReliabilityMaps(std::move(classes), params.state.width, params.state.height,
-                               threads_);
-  }
-
-  // The confining edges of the segmentation prior in `settings`, when the
-  // prior has made edges for the image (PixelState::edges, empty until then).
-  void ConfineAnchors(const std::vector<uint8_t>& edges, const ReliabilityMaps& maps,
-                      DeformableSettings* settings) {
-    if (prior_ == nullptr || edges.empty()) return;
-    if (edges.size() != static_cast<size_t>(maps.width) * maps.height) {
-      throw std::logic_error("segmentation prior edges and pixel state differ in size");
-    }
-    // The packed bits: only kConfiningEdge confines.
-    confining_.resize(edges.size());
-    for (size_t i = 0; i < edges.size(); ++i) confining_[i] = edges[i] & kConfiningEdge;
-    settings->edges = core::BoundaryView{confining_.data(), maps.width, maps.height, maps.width};
-    nearest_edge_ = NearestMarkedPixels(confining_.data(), maps.width, maps.height, threads_);
-    settings->nearest_edge = nearest_edge_.data();
-  }
-
-  // The deformable step of a pass (docs/method.md section 3): the state the previous
-  // pass left (upsampled at a round start) is classified, then unreliable
-  // pixels with anchors take the deformable update during the pass's
-  // iterations. The prior's edges of the image confine the anchor search;
-  // when the prior runs after the pass, prior_anchors_ receives the anchors
-  // of the first iteration.
+  // The deformable step of a pass (DeformablePass), then its figures in the log.
   void RunDeformableStep(const Pass& pass, const core::PassParams& params, PixelState* state) {
-    const auto classify_start = std::chrono::steady_clock::now();
-    const ReliabilityMaps maps = StartReliability(pass, params, state);
-    const double classify_seconds = SecondsSince(classify_start);
-    DeformableSettings settings;
-    settings.anchors = core::DefaultAnchorParams(pass.round, params.depth_max - params.depth_min,
-                                                 msp_.anchor_max_distance);
-    settings.cost = core::DefaultDeformableParams();
-    ConfineAnchors(state->edges, maps, &settings);
-    const DeformableStats stats = RunDeformableCheckerboardIterations(
-        params, maps, settings, pass.iterations, threads_, &deformable_buffers_,
-        pass.prior ? &prior_anchors_ : nullptr);
-    const double pixels = static_cast<double>(maps.width) * maps.height;
+    const DeformableStepReport report = deformable_.Run(pass, params, state);
+    const double pixels = static_cast<double>(report.num_pixels);
     std::printf(
         "  reliable %.1f%%, unreliable %.1f%%, deformable updates %.1f%% of pixels; %s %.2f s, "
         "anchor search %.2f s, sweeps %.2f s\n",
-        100.0 * maps.num_reliable / pixels, 100.0 * maps.num_unreliable / pixels,
-        100.0 * stats.anchored_updates / (pixels * pass.iterations),
-        pass.classify_after < 0 ? "nearest-reliable map (classes from the local refine)"
-                                : "classification",
-        classify_seconds, stats.anchor_seconds, stats.sweep_seconds);
+        100.0 * report.num_reliable / pixels, 100.0 * report.num_unreliable / pixels,
+        100.0 * report.sweeps.anchored_updates / (pixels * pass.iterations),
+        report.classified ? "classification"
+                          : "nearest-reliable map (classes from the local refine)",
+        report.classify_seconds, report.sweeps.anchor_seconds, report.sweeps.sweep_seconds);
   }
 
   // The prior of one image after a deformable pass (docs/method.md section 4): its
@@ -352,7 +297,7 @@ class CpuRunner {
     input.depth = with_depth ? &depth : nullptr;
     input.depth_min = problem.depth_min;
     input.depth_max = problem.depth_max;
-    input.anchors = &prior_anchors_;
+    input.anchors = &deformable_.prior_anchors();
     input.inlier_distance =
         core::AnchorInlierThreshold(pass.round, problem.depth_max - problem.depth_min);
     input.pass_id = pass.id;
@@ -413,13 +358,10 @@ class CpuRunner {
   const int threads_;
   StateCache cache_;
   std::vector<int> run_;
-  std::unique_ptr<Level> level_;          // the current round's
-  std::unique_ptr<Level> coarser_;        // the previous round's, null in the first round
-  std::unique_ptr<PriorDriver> prior_;    // null = no segmentation prior
-  std::vector<uint8_t> confining_;        // scratch: the confining bit of the current image
-  std::vector<int> nearest_edge_;         // scratch: its nearest confining pixel of every pixel
-  DeformableBuffers deformable_buffers_;  // scratch of the deformable iterations
-  std::vector<core::PriorAnchors> prior_anchors_;  // scratch: the anchors the prior reads
+  std::unique_ptr<Level> level_;        // the current round's
+  std::unique_ptr<Level> coarser_;      // the previous round's, null in the first round
+  std::unique_ptr<PriorDriver> prior_;  // null = no segmentation prior
+  DeformablePass deformable_;           // the deformable step and its buffers
   std::chrono::steady_clock::time_point start_;
 };
 

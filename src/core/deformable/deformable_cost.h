@@ -97,57 +97,6 @@ MSP_HD float DeformablePhotometricCost(const PassParams& p, const DeformableWind
   return DeformableFromCentre(p, w, j, H, *centre, d);
 }
 
-// Deformable cost of a prepared hypothesis at the centre pixel in source
-// view j; the geometric term is added in geometric passes exactly as in
-// ViewCosts. `conventional`, when given, receives the conventional cost of
-// the same plane in view j (its entry of ViewCosts).
-MSP_HD float DeformableViewCost(const PassParams& p, const DeformableWindows& w, int j,
-                                const PreparedPlane& plane, const DeformableParams& d,
-                                float* conventional = nullptr) {
-  if (!plane.valid) {
-    if (conventional != nullptr) *conventional = kMaxCost;
-    return kMaxCost;
-  }
-  float centre;
-  const float photometric = DeformablePhotometricCost(p, w, j, plane, d, &centre);
-  const float geometric = GeometricTerm(p, j, w.centre.col, w.centre.row, plane.depth);
-  if (conventional != nullptr) *conventional = centre + geometric;
-  return photometric + geometric;
-}
-
-// One-off form for tests: prepares the windows itself.
-MSP_HD float DeformableViewCost(const PassParams& p, int j, int col, int row,
-                                const PlaneHypothesis& h, const AnchorSet& anchors,
-                                const DeformableParams& d) {
-  DeformableWindows w;
-  PrepareDeformableWindows(p, col, row, anchors, d, &w);
-  return DeformableViewCost(p, w, j, PreparePlane(p, col, row, h), d);
-}
-
-// Deformable costs of h in every view with a non-zero weight (all when
-// null), and the conventional costs of the same views; the geometric terms
-// first, as in ViewCosts.
-MSP_HD void DeformableViewCosts(const PassParams& p, const DeformableWindows& w,
-                                const PlaneHypothesis& h, const DeformableParams& d,
-                                const float* weights, float* costs, float* conventional) {
-  const PreparedPlane plane = PreparePlane(p, w.centre.col, w.centre.row, h);
-  if (!plane.valid) {
-    for (int j = 0; j < p.num_src; ++j) costs[j] = conventional[j] = kMaxCost;
-    return;
-  }
-  float geometric[kMaxSourceViews];
-  GeometricTerms(p, w.centre.col, w.centre.row, plane, weights, geometric);
-  for (int j = 0; j < p.num_src; ++j) {
-    if (IsWeighted(weights, j)) {
-      float centre;
-      costs[j] = DeformablePhotometricCost(p, w, j, plane, d, &centre) + geometric[j];
-      conventional[j] = centre + geometric[j];
-    } else {
-      costs[j] = conventional[j] = kMaxCost;
-    }
-  }
-}
-
 // The deformable cost of a view, for BoundedAggregateCost; sums the
 // conventional costs of the views it scores on the way.
 struct DeformableViewCostSum {
@@ -165,8 +114,9 @@ struct DeformableViewCostSum {
   }
 };
 
-// AggregateCost of DeformableViewCosts(h) in the weighted views, or a bound
-// of it at or above `limit` (BoundedAggregateCost; the deformable
+// AggregateCost of h's deformable costs in the weighted views
+// (DeformablePhotometricCost plus the geometric term, as in ViewCosts), or a
+// bound of it at or above `limit` (BoundedAggregateCost; the deformable
 // photometric costs are >= 0 as well). With the exact cost, *conventional
 // receives the AggregateCost of the conventional costs; it is meaningless
 // otherwise.
@@ -214,11 +164,13 @@ struct DirectAnchorSums {
   }
 };
 
-// DeformableViewCosts in every view of up to kWindowLanes hypotheses h[k]
-// (rows kMaxSourceViews apart; rows whose `has` is false cost kMaxCost), the
-// centre windows of all of them at once per view, as CandidateViewCosts. The
-// anchor windows' sums come from `anchor_sums` (DirectAnchorSums' form),
-// asked once for every candidate and view that needs them.
+// The deformable costs (DeformablePhotometricCost plus the geometric term)
+// and the conventional costs in every view of up to kWindowLanes hypotheses
+// h[k] (rows kMaxSourceViews apart; rows whose `has` is false cost
+// kMaxCost), the centre windows of all of them at once per view, as
+// CandidateViewCosts. The anchor windows' sums come from `anchor_sums`
+// (DirectAnchorSums' form), asked once for every candidate and view that
+// needs them.
 template <typename AnchorSumsFn>
 MSP_HD void DeformableCandidateViewCosts(const PassParams& p, const DeformableWindows& w,
                                          const PlaneHypothesis* h, const bool* has, int num,
@@ -256,14 +208,6 @@ MSP_HD void DeformableCandidateViewCosts(const PassParams& p, const DeformableWi
       conventional[i] = centre[k][j] + geometric[k][j];
     }
   }
-}
-
-// The same with the anchor sums computed on the spot.
-MSP_HD void DeformableCandidateViewCosts(const PassParams& p, const DeformableWindows& w,
-                                         const PlaneHypothesis* h, const bool* has, int num,
-                                         const DeformableParams& d, float* costs,
-                                         float* conventional) {
-  DeformableCandidateViewCosts(p, w, h, has, num, d, DirectAnchorSums{p, d}, costs, conventional);
 }
 
 }  // namespace core

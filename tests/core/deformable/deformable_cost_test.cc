@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "tests/support/deformable_costs.h"
 #include "tests/support/plane_scene.h"
 
 namespace msp {
@@ -49,7 +50,7 @@ TEST(DeformableCost, AnchorsAtTheCentreGiveTheConventionalCost) {
   const AnchorSet a = AnchorsAt(zero, kMaxAnchors, kCol, kRow);
   for (float depth : {4.0f, 4.1f, 3.5f}) {  // a good and two wrong hypotheses
     const PlaneHypothesis h{depth, kFrontoParallel};
-    EXPECT_NEAR(DeformableViewCost(s.params, 0, kCol, kRow, h, a, SameWindow(s.params)),
+    EXPECT_NEAR(test::DeformableViewCost(s.params, 0, kCol, kRow, h, a, SameWindow(s.params)),
                 test::ConventionalViewCost(s.params, 0, kCol, kRow, h), kRounding);
   }
 }
@@ -59,7 +60,7 @@ TEST(DeformableCost, NoAnchorsIsExactlyTheConventionalCost) {
   test::MakeScene(4.0f, true, &s);
   AnchorSet none{};
   const PlaneHypothesis h{4.2f, kFrontoParallel};
-  EXPECT_EQ(DeformableViewCost(s.params, 0, kCol, kRow, h, none, DefaultDeformableParams()),
+  EXPECT_EQ(test::DeformableViewCost(s.params, 0, kCol, kRow, h, none, DefaultDeformableParams()),
             test::ConventionalViewCost(s.params, 0, kCol, kRow, h));
 }
 
@@ -74,8 +75,8 @@ TEST(DeformableCost, GeometricTermAsInTheConventionalCost) {
   const AnchorSet a = AnchorsAt(zero, kMaxAnchors, kCol, kRow);
   const PlaneHypothesis h{4.0f, kFrontoParallel};
   const float conventional = test::ConventionalViewCost(s.params, 0, kCol, kRow, h);
-  EXPECT_NEAR(DeformableViewCost(s.params, 0, kCol, kRow, h, a, SameWindow(s.params)), conventional,
-              kRounding);
+  EXPECT_NEAR(test::DeformableViewCost(s.params, 0, kCol, kRow, h, a, SameWindow(s.params)),
+              conventional, kRounding);
   s.params.geometric = 0;
   EXPECT_NEAR(conventional - test::ConventionalViewCost(s.params, 0, kCol, kRow, h),
               s.params.geom_lambda * s.params.geom_max_error, 1e-5f);
@@ -88,19 +89,19 @@ TEST(DeformableCost, SpreadAnchorsMatchTheTruePlaneOnly) {
   const DeformableParams d = DefaultDeformableParams();
   const PlaneHypothesis truth{4.0f, kFrontoParallel};
   const PlaneHypothesis wrong{4.4f, kFrontoParallel};
-  EXPECT_LT(DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d), 0.05f);
-  EXPECT_GT(DeformableViewCost(s.params, 0, kCol, kRow, wrong, a, d), 0.5f);
+  EXPECT_LT(test::DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d), 0.05f);
+  EXPECT_GT(test::DeformableViewCost(s.params, 0, kCol, kRow, wrong, a, d), 0.5f);
   // All views at once, weights skip a view.
   float costs[kMaxSourceViews], conventional[kMaxSourceViews];
   const float weights[1] = {1.0f};
   DeformableWindows windows;
   PrepareDeformableWindows(s.params, kCol, kRow, a, d, &windows);
-  DeformableViewCosts(s.params, windows, truth, d, weights, costs, conventional);
-  EXPECT_EQ(costs[0], DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d));
+  test::DeformableViewCosts(s.params, windows, truth, d, weights, costs, conventional);
+  EXPECT_EQ(costs[0], test::DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d));
   // The conventional cost comes out on the way, equal to ViewCosts'.
   EXPECT_EQ(conventional[0], test::ConventionalViewCost(s.params, 0, kCol, kRow, truth));
   const float skip[1] = {0.0f};
-  DeformableViewCosts(s.params, windows, truth, d, skip, costs, conventional);
+  test::DeformableViewCosts(s.params, windows, truth, d, skip, costs, conventional);
   EXPECT_EQ(costs[0], kMaxCost);
   EXPECT_EQ(conventional[0], kMaxCost);
 }
@@ -124,7 +125,7 @@ TEST(DeformableCost, BoundedAggregateStopsOnlyAtItsLimit) {
       for (float off : {1.0f, 1.05f, 1.2f}) {
         const PlaneHypothesis h{4.0f * off, kFrontoParallel};
         float costs[kMaxSourceViews], conventional[kMaxSourceViews];
-        DeformableViewCosts(s.params, w, h, d, weights, costs, conventional);
+        test::DeformableViewCosts(s.params, w, h, d, weights, costs, conventional);
         const float exact = AggregateCost(costs, weights, 2);
         float conventional_cost = -1.0f;
         ASSERT_NEAR(
@@ -161,10 +162,11 @@ TEST(DeformableCost, CandidateRowsCostWhatEachCandidateCostsAlone) {
   }
   h[3] = PlaneHypothesis{4.0f, kFrontoParallel};  // the truth
   float costs[kMaxAnchors * kMaxSourceViews], conventional[kMaxAnchors * kMaxSourceViews];
-  DeformableCandidateViewCosts(s.params, windows, h, has, kMaxAnchors, d, costs, conventional);
+  test::DeformableCandidateViewCosts(s.params, windows, h, has, kMaxAnchors, d, costs,
+                                     conventional);
   for (int k = 0; k < kMaxAnchors; ++k) {
     float alone[kMaxSourceViews], alone_conventional[kMaxSourceViews];
-    DeformableViewCosts(s.params, windows, h[k], d, nullptr, alone, alone_conventional);
+    test::DeformableViewCosts(s.params, windows, h[k], d, nullptr, alone, alone_conventional);
     for (int j = 0; j < s.params.num_src; ++j) {
       const int i = k * kMaxSourceViews + j;
       if (!has[k]) {
@@ -197,9 +199,9 @@ TEST(DeformableCost, TexturedAnchorsRescueATexturelessCentre) {
   const PlaneHypothesis wrong{4.4f, kFrontoParallel};
   EXPECT_EQ(test::ConventionalViewCost(s.params, 0, kCol, kRow, truth), kMaxCost);
   const DeformableParams d = DefaultDeformableParams();
-  const float good = DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d);
+  const float good = test::DeformableViewCost(s.params, 0, kCol, kRow, truth, a, d);
   EXPECT_NEAR(good, d.lambda * kMaxCost, 0.05f);  // only the centre term is lost
-  EXPECT_GT(DeformableViewCost(s.params, 0, kCol, kRow, wrong, a, d), good + 0.3f);
+  EXPECT_GT(test::DeformableViewCost(s.params, 0, kCol, kRow, wrong, a, d), good + 0.3f);
 }
 
 TEST(DeformableCost, AViewThatDoesNotSeeThePixelCostsTheMaximum) {
@@ -225,12 +227,12 @@ TEST(DeformableCost, AViewThatDoesNotSeeThePixelCostsTheMaximum) {
   }
   const AnchorSet a = AnchorsAt(offsets, kMaxAnchors, col, kRow);
   const DeformableParams d = DefaultDeformableParams();
-  EXPECT_EQ(DeformableViewCost(s.params, 0, col, kRow, truth, a, d), kMaxCost);
+  EXPECT_EQ(test::DeformableViewCost(s.params, 0, col, kRow, truth, a, d), kMaxCost);
   // The same anchors around a pixel the view does see match the true plane.
   const int seen_col = col + side * 14;
   const AnchorSet seen = AnchorsAt(offsets, kMaxAnchors, seen_col, kRow);
   ASSERT_TRUE(CentreInSource(H, src, seen_col, kRow));
-  EXPECT_LT(DeformableViewCost(s.params, 0, seen_col, kRow, truth, seen, d), 0.5f);
+  EXPECT_LT(test::DeformableViewCost(s.params, 0, seen_col, kRow, truth, seen, d), 0.5f);
 }
 
 }  // namespace

@@ -1,0 +1,80 @@
+#include "deformable/deformable_pass.h"
+
+#include <chrono>
+#include <stdexcept>
+#include <utility>
+
+#include "base/seconds_since.h"
+#include "core/deformable/anchors.h"
+#include "core/deformable/deformable_cost.h"
+#include "deformable/nearest_reliable.h"
+#include "prior/prior_driver.h"
+
+namespace msp {
+
+core::ReliabilityParams ReliabilityAfter(int finished_pass, const MspStereoOptions& msp) {
+  core::ReliabilityParams reliability = core::DefaultReliabilityParams(finished_pass);
+  reliability.max_minimum_cost = static_cast<float>(msp.reliable_max_cost);
+  reliability.single_min_cost = static_cast<float>(msp.reliable_single_cost);
+  reliability.min_spread = static_cast<float>(msp.reliable_min_spread);
+  return reliability;
+}
+
+DeformablePass::DeformablePass(const MspStereoOptions& msp, int num_threads)
+    : msp_(msp), num_threads_(num_threads) {}
+
+DeformableStepReport DeformablePass::Run(const Pass& pass, const core::PassParams& params,
+                                         PixelState* state) {
+  DeformableStepReport report;
+  const auto classify_start = std::chrono::steady_clock::now();
+  const ReliabilityMaps maps = StartReliability(pass, params, state);
+  report.classify_seconds = SecondsSince(classify_start);
+  report.classified = pass.classify_after >= 0;
+  report.num_pixels = maps.width * maps.height;
+  report.num_reliable = maps.num_reliable;
+  report.num_unreliable = maps.num_unreliable;
+  DeformableSettings settings;
+  settings.anchors = core::DefaultAnchorParams(pass.round, params.depth_max - params.depth_min,
+                                               msp_.anchor_max_distance);
+  settings.cost = core::DefaultDeformableParams();
+  ConfineAnchors(state->edges, maps, &settings);
+  report.sweeps =
+      RunDeformableCheckerboardIterations(params, maps, settings, pass.iterations, num_threads_,
+                                          &buffers_, pass.prior ? &prior_anchors_ : nullptr);
+  return report;
+}
+
+// The reliability maps the step starts with: the classes the previous pass's
+// local refinement left in `state`, or (at a round start) the state
+// classified here.
+ReliabilityMaps DeformablePass::StartReliability(const Pass& pass, const core::PassParams& params,
+                                                 PixelState* state) const {
+  std::vector<uint8_t> classes = std::move(state->classes);
+  state->classes.clear();
+  if ((pass.classify_after < 0) == classes.empty()) {
+    throw std::logic_error("pass schedule and reliability classes of the state disagree");
+  }
+  if (pass.classify_after >= 0) {
+    return ClassifyState(params, ReliabilityAfter(pass.classify_after, msp_), num_threads_);
+  }
+  return MakeReliabilityMaps(std::move(classes), params.state.width, params.state.height,
+                             num_threads_);
+}
+
+// The confining edges of the segmentation prior in `settings`, when the
+// prior has made edges for the image (PixelState::edges, empty until then).
+void DeformablePass::ConfineAnchors(const std::vector<uint8_t>& edges, const ReliabilityMaps& maps,
+                                    DeformableSettings* settings) {
+  if (edges.empty()) return;
+  if (edges.size() != static_cast<size_t>(maps.width) * maps.height) {
+    throw std::logic_error("segmentation prior edges and pixel state differ in size");
+  }
+  // The packed bits: only kConfiningEdge confines.
+  confining_.resize(edges.size());
+  for (size_t i = 0; i < edges.size(); ++i) confining_[i] = edges[i] & kConfiningEdge;
+  settings->edges = core::BoundaryView{confining_.data(), maps.width, maps.height, maps.width};
+  nearest_edge_ = NearestMarkedPixels(confining_.data(), maps.width, maps.height, num_threads_);
+  settings->nearest_edge = nearest_edge_.data();
+}
+
+}  // namespace msp

@@ -1,0 +1,240 @@
+#include "deformable/deformable_pass.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+#include "patch_match/sweeps.h"
+#include "prior/prior_driver.h"
+#include "tests/support/synthetic_views.h"
+
+namespace msp {
+namespace {
+
+constexpr int kWidth = 64, kHeight = 48, kNumViews = 3;
+constexpr float kPlaneDepth = 2.0f, kBaseline = 0.25f;
+constexpr int kNumThreads = 2;
+// The unreliable block of the constructed classes: reliable pixels all round,
+// so every sector of its pixels' anchor search finds some.
+constexpr int kBlockCol0 = 24, kBlockCol1 = 39, kBlockRow0 = 16, kBlockRow1 = 31;
+
+bool InBlock(int col, int row) {
+  return col >= kBlockCol0 && col <= kBlockCol1 && row >= kBlockRow0 && row <= kBlockRow1;
+}
+
+// Views of a textured fronto-parallel plane and the reference's pixel state,
+// with the PassParams of a photometric pass over it.
+struct Scene {
+  std::vector<View> views =
+      test::RenderFrontoParallelPlane(kWidth, kHeight, kNumViews, kPlaneDepth, kBaseline);
+  PixelState state{kWidth, kHeight};
+  core::PassParams params{};
+
+  Scene() {
+    params.ref_camera = views[0].camera;
+    params.ref_image = ImageOf(views[0]);
+    params.num_src = kNumViews - 1;
+    for (int j = 0; j < params.num_src; ++j) {
+      core::SourceView& src = params.src[j];
+      src.camera = views[j + 1].camera;
+      src.rel = core::ComputeRelativePose(params.ref_camera, src.camera);
+      src.image = ImageOf(views[j + 1]);
+      src.depth = core::ImageView{nullptr, 0, 0, 0};
+    }
+    params.ncc = core::NccParams{5, 2, 0, 5.0f, 0.2f};
+    params.depth_min = 1.0f;
+    params.depth_max = 4.0f;
+    params.num_samples = 15;
+    params.perturb_depth = 0.02f;
+    params.perturb_normal = 0.03f;
+    params.state = state.View();
+  }
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  static core::ImageView ImageOf(const View& view) {
+    return core::ImageView{view.gray.data.data(), view.gray.width, view.gray.height,
+                           view.gray.width};
+  }
+
+  // The true plane at every pixel, every source view selected, scored.
+  void SetTruePlanes() {
+    const size_t n = state.depth.size();
+    for (size_t i = 0; i < n; ++i) {
+      state.depth[i] = kPlaneDepth;
+      state.normal[i] = state.normal[n + i] = 0.0f;
+      state.normal[2 * n + i] = -1.0f;
+      state.mask[i] = (1u << params.num_src) - 1u;
+    }
+    ScoreState(params, kNumThreads);
+  }
+};
+
+// The classes a previous pass's refinement would leave: the block
+// unreliable, every other pixel reliable.
+std::vector<uint8_t> BlockClasses() {
+  std::vector<uint8_t> classes(kWidth * kHeight);
+  for (int row = 0; row < kHeight; ++row) {
+    for (int col = 0; col < kWidth; ++col) {
+      classes[row * kWidth + col] = InBlock(col, row) ? core::kUnreliable : core::kReliable;
+    }
+  }
+  return classes;
+}
+
+constexpr int kBlockPixels = (kBlockCol1 - kBlockCol0 + 1) * (kBlockRow1 - kBlockRow0 + 1);
+
+// A deformable pass of the first round that starts with the previous pass's classes.
+Pass DeformablePassWithClasses() {
+  Pass pass;
+  pass.kind = PassKind::kGeometric;
+  pass.index = 1;
+  pass.start = PassStart::kPrevious;
+  pass.sweeps = PassSweeps::kDeformable;
+  pass.iterations = 2;
+  pass.classify_after = -1;
+  return pass;
+}
+
+// Packed prior edges with `bits` on the ring of pixels just outside the block.
+std::vector<uint8_t> RingAroundTheBlock(uint8_t bits) {
+  std::vector<uint8_t> edges(kWidth * kHeight, 0);
+  for (int row = kBlockRow0 - 1; row <= kBlockRow1 + 1; ++row) {
+    for (int col = kBlockCol0 - 1; col <= kBlockCol1 + 1; ++col) {
+      if (!InBlock(col, row)) edges[row * kWidth + col] = bits;
+    }
+  }
+  return edges;
+}
+
+TEST(DeformablePass, ReliabilityAfterTakesTheOptionsCosts) {
+  MspStereoOptions msp;
+  msp.reliable_max_cost = 0.4;
+  msp.reliable_single_cost = 0.125;
+  msp.reliable_min_spread = 0.25;
+  const core::ReliabilityParams rp = ReliabilityAfter(2, msp);
+  const core::ReliabilityParams defaults = core::DefaultReliabilityParams(2);
+  EXPECT_EQ(rp.max_minimum_cost, 0.4f);
+  EXPECT_EQ(rp.single_min_cost, 0.125f);
+  EXPECT_EQ(rp.min_spread, 0.25f);
+  EXPECT_EQ(rp.radius, defaults.radius);
+}
+
+TEST(DeformablePass, UnreliablePixelsWithAnchorsTakeTheDeformableUpdate) {
+  Scene s;
+  s.SetTruePlanes();
+  s.state.classes = BlockClasses();
+  Pass pass = DeformablePassWithClasses();
+  pass.prior = true;
+  DeformablePass step(MspStereoOptions(), kNumThreads);
+  const DeformableStepReport report = step.Run(pass, s.params, &s.state);
+  EXPECT_FALSE(report.classified);
+  EXPECT_TRUE(s.state.classes.empty());  // taken by the step
+  EXPECT_EQ(report.num_pixels, kWidth * kHeight);
+  EXPECT_EQ(report.num_unreliable, kBlockPixels);
+  EXPECT_EQ(report.num_reliable, kWidth * kHeight - kBlockPixels);
+  // On the true plane, every pixel of the block finds anchors in every iteration.
+  EXPECT_EQ(report.sweeps.anchored_updates, static_cast<long long>(kBlockPixels) * pass.iterations);
+  // The prior's anchors: the block's pixels in pixel order, each with its anchors.
+  const std::vector<core::PriorAnchors>& anchors = step.prior_anchors();
+  ASSERT_EQ(anchors.size(), static_cast<size_t>(kBlockPixels));
+  int previous = -1;
+  for (const core::PriorAnchors& a : anchors) {
+    EXPECT_TRUE(InBlock(a.col, a.row)) << a.col << "," << a.row;
+    EXPECT_GT(a.row * kWidth + a.col, previous);
+    previous = a.row * kWidth + a.col;
+    ASSERT_GT(a.count, 0);
+    EXPECT_FALSE(InBlock(a.cols[0], a.rows[0]));  // anchors are reliable pixels
+    EXPECT_NEAR(a.points[0].z, kPlaneDepth, 0.01f);
+  }
+}
+
+TEST(DeformablePass, AnchorsAreKeptOnlyForThePrior) {
+  Scene s;
+  s.SetTruePlanes();
+  s.state.classes = BlockClasses();
+  DeformablePass step(MspStereoOptions(), kNumThreads);
+  const DeformableStepReport report = step.Run(DeformablePassWithClasses(), s.params, &s.state);
+  EXPECT_GT(report.sweeps.anchored_updates, 0);
+  EXPECT_TRUE(step.prior_anchors().empty());
+}
+
+// Without a reliable pixel no pixel has anchors: the step is the
+// conventional red-black iterations, bit for bit.
+TEST(DeformablePass, NoReliablePixelsIsTheConventionalSweep) {
+  Scene deformable, conventional;
+  InitializeState(deformable.params, kNumThreads);
+  InitializeState(conventional.params, kNumThreads);
+  deformable.state.classes.assign(kWidth * kHeight, core::kUnreliable);
+  Pass pass = DeformablePassWithClasses();
+  pass.prior = true;
+  DeformablePass step(MspStereoOptions(), kNumThreads);
+  const DeformableStepReport report = step.Run(pass, deformable.params, &deformable.state);
+  EXPECT_EQ(report.num_reliable, 0);
+  EXPECT_EQ(report.num_unreliable, kWidth * kHeight);
+  EXPECT_EQ(report.sweeps.anchored_updates, 0);
+  EXPECT_TRUE(step.prior_anchors().empty());
+  RunCheckerboardIterations(conventional.params, pass.iterations, kNumThreads);
+  EXPECT_EQ(deformable.state.depth, conventional.state.depth);
+  EXPECT_EQ(deformable.state.normal, conventional.state.normal);
+  EXPECT_EQ(deformable.state.cost, conventional.state.cost);
+  EXPECT_EQ(deformable.state.mask, conventional.state.mask);
+}
+
+// At a round start the state comes without classes: the step classifies it
+// with the thresholds after pass classify_after.
+TEST(DeformablePass, ClassifiesTheStateAtARoundStart) {
+  Scene s;
+  s.SetTruePlanes();
+  MspStereoOptions msp;
+  const ReliabilityMaps expected = ClassifyState(s.params, ReliabilityAfter(0, msp), kNumThreads);
+  Pass pass = DeformablePassWithClasses();
+  pass.classify_after = 0;
+  DeformablePass step(msp, kNumThreads);
+  const DeformableStepReport report = step.Run(pass, s.params, &s.state);
+  EXPECT_TRUE(report.classified);
+  EXPECT_GT(report.num_reliable, 0);
+  EXPECT_EQ(report.num_reliable, expected.num_reliable);
+  EXPECT_EQ(report.num_unreliable, expected.num_unreliable);
+}
+
+TEST(DeformablePass, ScheduleAndStateMustAgree) {
+  Scene s;
+  s.SetTruePlanes();
+  DeformablePass step(MspStereoOptions(), kNumThreads);
+  // Classes from the previous pass expected, none in the state.
+  EXPECT_THROW(step.Run(DeformablePassWithClasses(), s.params, &s.state), std::logic_error);
+  // Classified at the start, yet the state has classes.
+  Pass classify = DeformablePassWithClasses();
+  classify.classify_after = 0;
+  s.state.classes = BlockClasses();
+  EXPECT_THROW(step.Run(classify, s.params, &s.state), std::logic_error);
+  // Prior edges of another size.
+  s.state.classes = BlockClasses();
+  s.state.edges.assign(kWidth, kConfiningEdge);
+  EXPECT_THROW(step.Run(DeformablePassWithClasses(), s.params, &s.state), std::logic_error);
+}
+
+// A confining edge all round the block leaves its pixels no anchor; the same
+// ring without the confining bit confines nothing.
+TEST(DeformablePass, OnlyConfiningEdgesConfineTheAnchors) {
+  long long anchored[3];
+  const std::vector<uint8_t> edges[3] = {
+      {}, RingAroundTheBlock(kConfiningEdge), RingAroundTheBlock(kAggregatedEdge | kRefinedEdge)};
+  for (int k = 0; k < 3; ++k) {
+    Scene s;
+    s.SetTruePlanes();
+    s.state.classes = BlockClasses();
+    s.state.edges = edges[k];
+    DeformablePass step(MspStereoOptions(), kNumThreads);
+    anchored[k] = step.Run(DeformablePassWithClasses(), s.params, &s.state).sweeps.anchored_updates;
+  }
+  EXPECT_GT(anchored[0], 0);
+  EXPECT_EQ(anchored[1], 0);
+  EXPECT_EQ(anchored[2], anchored[0]);
+}
+
+}  // namespace
+}  // namespace msp

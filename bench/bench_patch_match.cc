@@ -52,29 +52,6 @@ double Seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-core::PassParams MakeParams(const std::vector<View>& views, PixelState* state) {
-  core::PassParams p{};
-  p.ref_camera = views[0].camera;
-  const DenseMap& ref = views[0].gray;
-  p.ref_image = core::ImageView{ref.data.data(), ref.width, ref.height, ref.width};
-  p.num_src = static_cast<int>(views.size()) - 1;
-  for (int j = 0; j < p.num_src; ++j) {
-    const View& v = views[j + 1];
-    p.src[j].camera = v.camera;
-    p.src[j].rel = core::ComputeRelativePose(p.ref_camera, v.camera);
-    p.src[j].image = core::ImageView{v.gray.data.data(), v.gray.width, v.gray.height, v.gray.width};
-    p.src[j].depth = core::ImageView{nullptr, 0, 0, 0};
-  }
-  p.ncc = core::NccParams{5, 2, 0, 5.0f, 0.2f};
-  p.depth_min = 1.0f;
-  p.depth_max = 4.0f;
-  p.num_samples = 15;
-  p.perturb_depth = 0.02f;
-  p.perturb_normal = 0.03f;
-  p.state = state->View();
-  return p;
-}
-
 // The geometric consistency term, one core: the composed maps of the hot
 // loops (ComposedReprojectionError) against the projections written out
 // (ReprojectionError), on source depth maps of a fronto-parallel plane.
@@ -225,7 +202,7 @@ void Run(int width, int height, int num_views, bool ncc_only) {
   const std::vector<View> views =
       test::RenderFrontoParallelPlane(width, height, num_views, 2.0f, 0.3f);
   PixelState state(width, height);
-  const core::PassParams p = MakeParams(views, &state);
+  const core::PassParams p = test::PhotometricPassParams(views, &state);
 
   // Matching cost on one core: every pixel against every source with a fixed
   // plane, in the general form (GeneralNccCost) and the fast one (a reference

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "base/mvs_input.h"
+#include "core/patch_match/patch_match_kernel.h"
+#include "patch_match/pixel_state.h"
 #include "tests/support/cameras.h"
 #include "tests/support/images.h"
 
@@ -61,6 +63,34 @@ inline std::vector<View> RenderFrontoParallelPlane(int width, int height, int nu
     views.push_back(std::move(view));
   }
   return views;
+}
+
+// The PassParams of a photometric pass over `views` (views[0] the reference)
+// and its pixel state: the depth range of the planes rendered here, ACMM's
+// 15 view samples and the refinement's perturbations.
+inline core::PassParams PhotometricPassParams(const std::vector<View>& views, PixelState* state) {
+  const auto image_of = [](const View& v) {
+    return core::ImageView{v.gray.data.data(), v.gray.width, v.gray.height, v.gray.width};
+  };
+  core::PassParams p{};
+  p.ref_camera = views[0].camera;
+  p.ref_image = image_of(views[0]);
+  p.num_src = static_cast<int>(views.size()) - 1;
+  for (int j = 0; j < p.num_src; ++j) {
+    core::SourceView& src = p.src[j];
+    src.camera = views[j + 1].camera;
+    src.rel = core::ComputeRelativePose(p.ref_camera, src.camera);
+    src.image = image_of(views[j + 1]);
+    src.depth = core::ImageView{nullptr, 0, 0, 0};
+  }
+  p.ncc = core::NccParams{5, 2, 0, 5.0f, 0.2f};
+  p.depth_min = 1.0f;
+  p.depth_max = 4.0f;
+  p.num_samples = 15;
+  p.perturb_depth = 0.02f;
+  p.perturb_normal = 0.03f;
+  p.state = state->View();
+  return p;
 }
 
 }  // namespace test

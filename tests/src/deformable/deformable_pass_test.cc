@@ -32,32 +32,10 @@ struct Scene {
   PixelState state{kWidth, kHeight};
   core::PassParams params{};
 
-  Scene() {
-    params.ref_camera = views[0].camera;
-    params.ref_image = ImageOf(views[0]);
-    params.num_src = kNumViews - 1;
-    for (int j = 0; j < params.num_src; ++j) {
-      core::SourceView& src = params.src[j];
-      src.camera = views[j + 1].camera;
-      src.rel = core::ComputeRelativePose(params.ref_camera, src.camera);
-      src.image = ImageOf(views[j + 1]);
-      src.depth = core::ImageView{nullptr, 0, 0, 0};
-    }
-    params.ncc = core::NccParams{5, 2, 0, 5.0f, 0.2f};
-    params.depth_min = 1.0f;
-    params.depth_max = 4.0f;
-    params.num_samples = 15;
-    params.perturb_depth = 0.02f;
-    params.perturb_normal = 0.03f;
-    params.state = state.View();
-  }
+  Scene() { params = test::PhotometricPassParams(views, &state); }
+
   Scene(const Scene&) = delete;
   Scene& operator=(const Scene&) = delete;
-
-  static core::ImageView ImageOf(const View& view) {
-    return core::ImageView{view.gray.data.data(), view.gray.width, view.gray.height,
-                           view.gray.width};
-  }
 
   // The true plane at every pixel, every source view selected, scored.
   void SetTruePlanes() {

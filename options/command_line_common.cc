@@ -1,5 +1,8 @@
 #include "options/command_line_common.h"
 
+#include <cstdio>
+#include <cstdlib>
+
 #include "options/option_parser.h"
 
 namespace msp {
@@ -20,6 +23,17 @@ namespace po = boost::program_options;
 }
 
 }  // namespace
+
+std::string ValueText(const std::string& value) { return value; }
+std::string ValueText(bool value) { return value ? "true" : "false"; }
+std::string ValueText(int value) { return std::to_string(value); }
+std::string ValueText(uint64_t value) { return std::to_string(value); }
+std::string ValueText(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.15g", value);
+  if (std::strtod(text, nullptr) != value) std::snprintf(text, sizeof(text), "%.17g", value);
+  return text;
+}
 
 void AddHelpOption(po::options_description* description) {
   description->add_options()("help,h", "Print this help and exit.");

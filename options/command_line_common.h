@@ -6,6 +6,7 @@
 #pragma once
 
 #include <boost/program_options.hpp>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,21 @@ namespace command_line {
 // The help text's layout: 100 columns, descriptions from column 50 at most.
 constexpr unsigned kHelpLineLength = 100;
 constexpr unsigned kHelpMinDescriptionLength = 50;
+
+// The text of a value as the parsers read it back: true/false for booleans,
+// and doubles with the digits needed to give the same double again.
+std::string ValueText(const std::string& value);
+std::string ValueText(bool value);
+std::string ValueText(int value);
+std::string ValueText(uint64_t value);
+std::string ValueText(double value);
+
+// A default as --help shows it: ValueText, with "" marking an empty string.
+template <typename T>
+std::string DefaultText(const T& value) {
+  const std::string text = ValueText(value);
+  return text.empty() ? "\"\"" : text;
+}
 
 // Lists -h / --help in a help text.
 void AddHelpOption(boost::program_options::options_description* description);

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <boost/program_options.hpp>
 #include <cctype>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <functional>
@@ -20,24 +18,8 @@ namespace {
 
 namespace po = boost::program_options;
 
-// The text of a value as the parser reads it back: true/false for booleans,
-// and doubles with the digits needed to give the same double again.
-std::string ValueText(const std::string& value) { return value; }
-std::string ValueText(bool value) { return value ? "true" : "false"; }
-std::string ValueText(int value) { return std::to_string(value); }
-std::string ValueText(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.15g", value);
-  if (std::strtod(text, nullptr) != value) std::snprintf(text, sizeof(text), "%.17g", value);
-  return text;
-}
-
-// A default as --help shows it; "" marks an empty string.
-template <typename T>
-std::string DefaultText(const T& value) {
-  const std::string text = ValueText(value);
-  return text.empty() ? "\"\"" : text;
-}
+using command_line::DefaultText;
+using command_line::ValueText;
 
 // `text` as one POSIX shell word: as is when it needs no quoting, else in
 // single quotes ('' for the empty string).

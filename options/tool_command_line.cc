@@ -12,13 +12,7 @@ namespace {
 
 namespace po = boost::program_options;
 
-std::string ToText(const std::string& value) { return value.empty() ? "\"\"" : value; }
-template <typename T>
-std::string ToText(const T& value) {
-  std::ostringstream stream;
-  stream << value;
-  return stream.str();
-}
+using command_line::DefaultText;
 
 std::string JoinChoices(const std::vector<std::string>& choices) {
   std::string text;
@@ -65,18 +59,20 @@ void ToolCommandLine::Add(const std::string& name, std::string* field, const std
   impl_->description.add_options()(
       name.c_str(),
       po::value<std::string>(field)->default_value(
-          *field, default_text.empty() ? ToText(*field) : default_text),
+          *field, default_text.empty() ? DefaultText(*field) : default_text),
       help.c_str());
 }
 
 void ToolCommandLine::Add(const std::string& name, int* field, const std::string& help) {
   impl_->description.add_options()(
-      name.c_str(), po::value<int>(field)->default_value(*field, ToText(*field)), help.c_str());
+      name.c_str(), po::value<int>(field)->default_value(*field, DefaultText(*field)),
+      help.c_str());
 }
 
 void ToolCommandLine::Add(const std::string& name, double* field, const std::string& help) {
   impl_->description.add_options()(
-      name.c_str(), po::value<double>(field)->default_value(*field, ToText(*field)), help.c_str());
+      name.c_str(), po::value<double>(field)->default_value(*field, DefaultText(*field)),
+      help.c_str());
 }
 
 void ToolCommandLine::Add(const std::string& name, uint64_t* field, const std::string& help) {
@@ -84,7 +80,7 @@ void ToolCommandLine::Add(const std::string& name, uint64_t* field, const std::s
   // convert it here instead.
   impl_->description.add_options()(name.c_str(),
                                    po::value<std::string>()
-                                       ->default_value(ToText(*field))
+                                       ->default_value(DefaultText(*field))
                                        ->notifier([name, field](const std::string& text) {
                                          *field = ParseUnsigned(name, text);
                                        }),
@@ -95,7 +91,7 @@ void ToolCommandLine::AddChoice(const std::string& name, std::string* field,
                                 const std::vector<std::string>& choices, const std::string& help) {
   impl_->description.add_options()(name.c_str(),
                                    po::value<std::string>()
-                                       ->default_value(*field, ToText(*field))
+                                       ->default_value(*field, DefaultText(*field))
                                        ->notifier([name, field, choices](const std::string& value) {
                                          for (const std::string& choice : choices) {
                                            if (value == choice) {

@@ -69,9 +69,8 @@ void DeformablePass::ConfineAnchors(const std::vector<uint8_t>& edges, const Rel
   if (edges.size() != static_cast<size_t>(maps.width) * maps.height) {
     throw std::logic_error("segmentation prior edges and pixel state differ in size");
   }
-  // The packed bits: only kConfiningEdge confines.
-  confining_.resize(edges.size());
-  for (size_t i = 0; i < edges.size(); ++i) confining_[i] = edges[i] & kConfiningEdge;
+  // Of the packed bits only kConfiningEdge confines.
+  confining_ = UnpackEdgeBit(edges, kConfiningEdge);
   settings->edges = core::BoundaryView{confining_.data(), maps.width, maps.height, maps.width};
   nearest_edge_ = NearestMarkedPixels(confining_.data(), maps.width, maps.height, num_threads_);
   settings->nearest_edge = nearest_edge_.data();

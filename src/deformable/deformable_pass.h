@@ -61,7 +61,7 @@ class DeformablePass {
 
   MspStereoOptions msp_;
   int num_threads_;
-  std::vector<uint8_t> confining_;  // scratch: the confining bit of the current image
+  std::vector<uint8_t> confining_;  // the confining bit of the current image, as 0/1
   std::vector<int> nearest_edge_;   // scratch: its nearest confining pixel of every pixel
   DeformableBuffers buffers_;       // scratch of the deformable iterations
   std::vector<core::PriorAnchors> prior_anchors_;

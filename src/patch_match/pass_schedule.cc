@@ -34,6 +34,9 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
   // The prior's edges confine the passes after the one that made them, so
   // none are made in the final pass.
   pass.prior = SegmentationPriorEnabled(msp) && deformable && !final_pass;
+  // Planes a segment imposes are checked by the passes after it, so the
+  // final pass offers none.
+  pass.segment_planes = msp.segment_planes && !final_pass;
   if (final_pass) {
     pass.output = PassOutput::kFinal;
   } else if (last_round && pm.geom_consistency && index == 0) {
@@ -90,6 +93,7 @@ std::string ToString(const Pass& pass) {
   s += StartName(pass.start);
   s += "; " + std::to_string(pass.iterations) + " x " + SweepsName(pass);
   s += pass.refine_classifies ? "; refine + classify" : "; refine";
+  if (pass.segment_planes) s += "; segment planes";
   if (pass.prior) s += "; prior";
   s += OutputName(pass.output);
   if (pass.preview) s += "; previews";

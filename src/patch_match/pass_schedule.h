@@ -62,6 +62,7 @@ struct Pass {
   // The local refinement also classifies the planes (thresholds after this
   // pass) for the next pass of the round.
   bool refine_classifies = false;
+  bool segment_planes = false;  // segments offer their planes after the refinement
   bool prior = false;  // the segmentation prior runs after the pass
   PassOutput output = PassOutput::kNone;
   bool preview = false;  // writes the prior preview (with kFinal)

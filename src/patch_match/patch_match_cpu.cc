@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <set>
@@ -18,6 +19,7 @@
 #include "deformable/deformable_sweeps.h"
 #include "patch_match/image_pyramid.h"
 #include "patch_match/pass_schedule.h"
+#include "patch_match/segment_planes.h"
 #include "patch_match/state_cache.h"
 #include "patch_match/sweeps.h"
 #include "prior/prior_driver.h"
@@ -139,13 +141,13 @@ class CpuRunner {
       level.gray.emplace(v, std::move(gray));
       level.cameras.emplace(v, camera);
     }
-    if (prior_ != nullptr) {
+    if (prior_ != nullptr || msp_.segment_planes) {
       for (int k : run_) {
         const View& view = views_[problems_[k].ref];
         if (view.color.channels != 3 || view.color.width != view.gray.width ||
             view.color.height != view.gray.height) {
           throw std::invalid_argument("view " + view.name +
-                                      ": the segmentation prior needs its RGB image");
+                                      ": the segmentation prior and segment planes need its RGB image");
         }
         DenseMap color = view.color;
         for (int h = 0; h < halvings; ++h) color = DownsampleHalf(color);
@@ -248,6 +250,10 @@ class CpuRunner {
       LocalRefineState(params, threads_);
     }
     const double refine_seconds = SecondsSince(refine_start);
+    if (pass.segment_planes) RunSegmentPlanes(params, problem);
+    if (msp_.surface_normals && (pass.output == PassOutput::kFinal || getenv("MSP_SN_ALL"))) {
+      SurfaceNormalsState(params, threads_);
+    }
     if (pass.prior) RunPrior(pass, problem, &state);
     // Asked before the outputs are written: afterwards the image has them.
     const bool preview = pass.preview && !sink_.HasFinalOutput(problem.ref);
@@ -277,6 +283,16 @@ class CpuRunner {
         report.classified ? "classification"
                           : "nearest-reliable map (classes from the local refine)",
         report.classify_seconds, report.sweeps.anchor_seconds, report.sweeps.sweep_seconds);
+  }
+
+  void RunSegmentPlanes(const core::PassParams& params, const Problem& problem) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const SegmentPlanesReport r =
+        ApplySegmentPlanes(params, level_->color.at(problem.ref), threads_);
+    std::printf("  segment planes: %d of %d segments, %.1f%% of pixels offered, %.1f%% took; %.2f s\n",
+                r.num_planes, r.num_segments,
+                100.0 * r.num_offered / (params.state.width * params.state.height),
+                100.0 * r.num_taken / (params.state.width * params.state.height), SecondsSince(t0));
   }
 
   // The prior of one image after a deformable pass (docs/method.md section 4): its

@@ -1,0 +1,222 @@
+#include "patch_match/segment_planes.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "base/parallel_for.h"
+#include "core/math/plane.h"
+#include "core/math/rng.h"
+#include "core/patch_match/local_refine.h"
+#include "core/patch_match/segment_plane.h"
+#include "prior/multiscale_segmentation.h"
+
+namespace msp {
+namespace {
+
+// A pixel is reliable when its window has texture and its plane matches:
+// (1 - NCC) averaged over its selected views below this.
+constexpr float kReliableCost = 0.3f;
+// RANSAC: hypotheses per segment; at most this many support points scored.
+constexpr int kRansacIterations = 64;
+constexpr int kMaxScoredPoints = 2048;
+// An inlier lies within this many pixels of disparity of the plane: the
+// same tolerance at every pyramid level.
+constexpr float kInlierDisparity = 1.0f;
+// A plane needs this many inliers and this share of the segment's support.
+constexpr int kMinInliers = 12;
+constexpr float kMinInlierShare = 0.5f;
+// The inliers must span two directions of the image: the second principal
+// axis of their pixel positions at least this share of the segment's. Points
+// along one crease fit every plane through it.
+constexpr float kMinSpreadShare = 0.2f;
+// A textureless pixel takes its segment's plane unless that costs this much
+// more than its own (costs of noise-level windows differ by about this much).
+constexpr float kTexturelessMargin = 0.1f;
+
+struct SupportPoint {
+  int col, row;
+  core::Vec3 X;  // camera frame
+};
+
+// Second-largest eigenvalue of the covariance of 2D positions.
+template <typename Positions>
+double SecondSpread(const Positions& positions) {
+  if (positions.size() < 3) return 0.0;
+  double mx = 0, my = 0;
+  for (const auto& p : positions) {
+    mx += p.col;
+    my += p.row;
+  }
+  mx /= positions.size();
+  my /= positions.size();
+  double xx = 0, yy = 0, xy = 0;
+  for (const auto& p : positions) {
+    xx += (p.col - mx) * (p.col - mx);
+    yy += (p.row - my) * (p.row - my);
+    xy += (p.col - mx) * (p.row - my);
+  }
+  xx /= positions.size();
+  yy /= positions.size();
+  xy /= positions.size();
+  const double half_trace = 0.5 * (xx + yy);
+  const double det = xx * yy - xy * xy;
+  return half_trace - std::sqrt(std::max(0.0, half_trace * half_trace - det));
+}
+
+struct PixelPosition {
+  int col, row;
+};
+
+bool IsInlier(const core::PassParams& p, float focal_baseline, const SupportPoint& s,
+              core::Vec3 normal, core::Vec3 point) {
+  const core::PlaneHypothesis h = core::HypothesisOnPlane(p.ref_camera, s.col, s.row, normal, point);
+  if (!(h.depth > 0.0f)) return false;
+  return std::fabs(focal_baseline / h.depth - focal_baseline / s.X.z) < kInlierDisparity;
+}
+
+// Least-squares plane of the inliers: their centroid and the direction of least spread.
+void RefitPlane(const std::vector<const SupportPoint*>& inliers, SegmentPlane* plane) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const SupportPoint* s : inliers) mean += Eigen::Vector3d(s->X.x, s->X.y, s->X.z);
+  mean /= static_cast<double>(inliers.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const SupportPoint* s : inliers) {
+    const Eigen::Vector3d d = Eigen::Vector3d(s->X.x, s->X.y, s->X.z) - mean;
+    cov += d * d.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
+  const Eigen::Vector3d n = solver.eigenvectors().col(0);  // smallest eigenvalue first
+  plane->normal = core::Vec3{static_cast<float>(n.x()), static_cast<float>(n.y()),
+                             static_cast<float>(n.z())};
+  plane->point = core::Vec3{static_cast<float>(mean.x()), static_cast<float>(mean.y()),
+                            static_cast<float>(mean.z())};
+}
+
+SegmentPlane FitOnePlane(const core::PassParams& p, float focal_baseline,
+                         const std::vector<SupportPoint>& support, double segment_spread,
+                         uint64_t key) {
+  SegmentPlane best;
+  best.num_support = static_cast<int>(support.size());
+  if (static_cast<int>(support.size()) < kMinInliers) return best;
+  // Score on an even subsample of large supports.
+  const size_t stride = (support.size() + kMaxScoredPoints - 1) / kMaxScoredPoints;
+  core::Rng rng = core::MakeRng(key);
+  const auto pick = [&]() {
+    const size_t k = static_cast<size_t>(rng.Uniform() * support.size());
+    return &support[std::min(k, support.size() - 1)];
+  };
+  int best_count = 0;
+  for (int it = 0; it < kRansacIterations; ++it) {
+    const SupportPoint* a = pick();
+    const SupportPoint* b = pick();
+    const SupportPoint* c = pick();
+    const core::Vec3 n = core::Cross(b->X - a->X, c->X - a->X);
+    const float len = core::Norm(n);
+    if (!(len > 1e-9f)) continue;
+    const core::Vec3 normal = (1.0f / len) * n;
+    int count = 0;
+    for (size_t k = 0; k < support.size(); k += stride) {
+      count += IsInlier(p, focal_baseline, support[k], normal, a->X) ? 1 : 0;
+    }
+    if (count > best_count) {
+      best_count = count;
+      best.normal = normal;
+      best.point = a->X;
+    }
+  }
+  if (best_count == 0) return best;
+  std::vector<const SupportPoint*> inliers;
+  for (const SupportPoint& s : support) {
+    if (IsInlier(p, focal_baseline, s, best.normal, best.point)) inliers.push_back(&s);
+  }
+  if (inliers.size() >= 3) RefitPlane(inliers, &best);
+  std::vector<PixelPosition> positions;
+  for (const SupportPoint& s : support) {
+    if (IsInlier(p, focal_baseline, s, best.normal, best.point)) positions.push_back({s.col, s.row});
+  }
+  const int count = static_cast<int>(positions.size());
+  const bool supported = count >= kMinInliers && count >= kMinInlierShare * support.size();
+  const bool spans = SecondSpread(positions) >= kMinSpreadShare * kMinSpreadShare * segment_spread;
+  best.num_inliers = supported && spans ? count : 0;
+  return best;
+}
+
+}  // namespace
+
+std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
+                                           const std::vector<int32_t>& labels,
+                                           const std::vector<uint8_t>& reliable, uint64_t key) {
+  const core::PixelStateView& s = params.state;
+  int num_segments = 0;
+  for (int32_t l : labels) num_segments = std::max(num_segments, static_cast<int>(l));
+  std::vector<std::vector<SupportPoint>> support(num_segments + 1);
+  std::vector<std::vector<PixelPosition>> pixels(num_segments + 1);
+  for (int row = 0; row < s.height; ++row) {
+    for (int col = 0; col < s.width; ++col) {
+      const int i = s.Index(col, row);
+      if (labels[i] <= 0) continue;
+      pixels[labels[i]].push_back({col, row});
+      if (!reliable[i]) continue;
+      const core::Vec3 X = core::BackProject(params.ref_camera, static_cast<float>(col),
+                                             static_cast<float>(row), s.depth[i]);
+      support[labels[i]].push_back({col, row, X});
+    }
+  }
+  const float focal_baseline = params.ref_camera.fx * core::MeanBaseline(params, 0u);
+  std::vector<SegmentPlane> planes(num_segments + 1);
+  for (int id = 1; id <= num_segments; ++id) {
+    planes[id] = FitOnePlane(params, focal_baseline, support[id], SecondSpread(pixels[id]),
+                             core::Mix64(key ^ static_cast<uint64_t>(id)));
+  }
+  return planes;
+}
+
+SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params, const DenseMap& color,
+                                       int num_threads) {
+  const core::PixelStateView& s = params.state;
+  const int n = s.width * s.height;
+  // Scene-level granularity: a wall or a floor is one segment.
+  const char* lv = getenv("MSP_SP_LEVEL");
+  const int level = lv ? atoi(lv) : 0;
+  const std::vector<int32_t> labels =
+      SegmentGraph(color, SegmentationScale(level, 3, color.width, color.height));
+  std::vector<float> texture(n);
+  ParallelFor(0, s.height, num_threads, [&](int row) {
+    for (int col = 0; col < s.width; ++col) {
+      texture[s.Index(col, row)] = core::WindowTextureStd(params, col, row);
+    }
+  });
+  std::vector<uint8_t> reliable(n);
+  for (int i = 0; i < n; ++i) {
+    reliable[i] = texture[i] >= core::kTexturedWindowStd && s.depth[i] > 0.0f && s.cost[i] < kReliableCost;
+  }
+  const uint64_t key = core::RngKey(params.seed, params.image_id, params.pass_id, 0x5E6u, 0u);
+  const std::vector<SegmentPlane> planes = FitSegmentPlanes(params, labels, reliable, key);
+  SegmentPlanesReport report;
+  report.num_segments = static_cast<int>(planes.size()) - 1;
+  for (const SegmentPlane& plane : planes) report.num_planes += plane.num_inliers > 0 ? 1 : 0;
+  std::vector<int> taken(s.height, 0), offered(s.height, 0);
+  ParallelFor(0, s.height, num_threads, [&](int row) {
+    for (int col = 0; col < s.width; ++col) {
+      const int i = s.Index(col, row);
+      const SegmentPlane& plane = planes[labels[i]];
+      if (plane.num_inliers == 0) continue;
+      ++offered[row];
+      const core::PlaneHypothesis candidate =
+          core::HypothesisOnPlane(params.ref_camera, col, row, plane.normal, plane.point);
+      const float before = s.depth[i];
+      const float margin = texture[i] < core::kTexturedWindowStd ? kTexturelessMargin : 0.0f;
+      core::OfferSegmentPlane(params, col, row, candidate, margin);
+      taken[row] += s.depth[i] != before ? 1 : 0;
+    }
+  });
+  for (int row = 0; row < s.height; ++row) {
+    report.num_offered += offered[row];
+    report.num_taken += taken[row];
+  }
+  return report;
+}
+
+}  // namespace msp

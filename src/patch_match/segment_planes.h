@@ -1,0 +1,46 @@
+// Segment planes (docs/method.md section 5.1): after a pass, the reference
+// image is cut into colour segments; each segment's reliable pixels (enough
+// texture, low cost) give its plane by RANSAC in 3D, and every pixel of the
+// segment is offered that plane (core/patch_match/segment_plane.h). Textured
+// pixels keep their plane unless the segment's matches better; textureless
+// ones take it unless the views clearly reject it, so a blank wall gets the
+// plane its borders fix instead of whatever a noise-level cost let through.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "base/dense_map.h"
+#include "core/math/vec.h"
+#include "core/patch_match/patch_match_kernel.h"
+
+namespace msp {
+
+struct SegmentPlane {
+  core::Vec3 normal;  // unit, camera frame
+  core::Vec3 point;   // a point of the plane, camera frame
+  int num_support = 0;  // reliable pixels of the segment
+  int num_inliers = 0;
+};
+
+struct SegmentPlanesReport {
+  int num_segments = 0;
+  int num_planes = 0;       // segments whose plane passed the checks
+  int num_offered = 0;      // pixels in those segments
+  int num_taken = 0;        // pixels that took the segment's plane
+};
+
+// Fits the plane of every segment of `labels` (ids 1..K, 0 = none) from the
+// pixels of `reliable` (1 = reliable), RANSAC seeded by `key`; segments
+// without a well-supported plane that spans two image directions get none
+// (num_inliers = 0). Index = segment id.
+std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
+                                           const std::vector<int32_t>& labels,
+                                           const std::vector<uint8_t>& reliable, uint64_t key);
+
+// The whole step on the state of `params`: segments `color` (the reference
+// image at the pass's level, RGB planes), fits the planes, offers them.
+SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params, const DenseMap& color,
+                                       int num_threads);
+
+}  // namespace msp

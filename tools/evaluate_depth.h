@@ -35,8 +35,8 @@ struct DepthMapMetrics {
 };
 
 // The prediction may be smaller than the ground truth (max_image_size): the
-// ground truth is sampled nearest-neighbour at each predicted pixel, the
-// mapping COLMAP's fusion uses (intrinsics scaled per axis). `normal` may be
+// ground truth is sampled nearest-neighbour at each predicted pixel
+// (NearestGroundTruthIndex, colmap_ext/ground_truth.h). `normal` may be
 // empty (then normal errors are 0). `textureless` is CV_8UC1 at GT size.
 DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
                                  const DenseMap& gt_depth, const DenseMap& gt_normal,

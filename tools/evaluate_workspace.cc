@@ -45,9 +45,7 @@ DepthMapMetrics EvaluateOne(const EvaluationOptions& options, const GroundTruthI
 
 EvaluationResult EvaluateWorkspace(const EvaluationOptions& options) {
   EvaluationResult result;
-  const std::string gt_dir =
-      options.ground_truth.empty() ? options.workspace + "/ground_truth" : options.ground_truth;
-  result.info = ReadGroundTruthInfo(gt_dir);
+  result.info = ReadGroundTruthInfo(GroundTruthDir(options.workspace, options.ground_truth));
   result.input_type = options.input_type;
   if (options.evaluate_maps) {
     for (const std::string& name : result.info.image_names) {

@@ -3,6 +3,7 @@
 
 #include <opencv2/core.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base/dense_map.h"
@@ -32,6 +33,9 @@ struct DepthMapMetrics {
   RegionMetrics all;
   RegionMetrics textureless;
   RegionMetrics textured;  // the rest of the ground-truth pixels
+  // The pictures msp_stereo --MspStereo.write_previews left for the image, as
+  // (kind, path), only those that exist (ExistingPreviews, map_previews.h).
+  std::vector<std::pair<std::string, std::string>> previews;
 };
 
 // The prediction may be smaller than the ground truth (max_image_size): the

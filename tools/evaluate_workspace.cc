@@ -5,6 +5,7 @@
 
 #include "colmap_ext/dense_map_io.h"
 #include "colmap_ext/errors.h"
+#include "colmap_ext/map_previews.h"
 #include "tools/ply_points.h"
 
 namespace msp {
@@ -50,6 +51,7 @@ EvaluationResult EvaluateWorkspace(const EvaluationOptions& options) {
   if (options.evaluate_maps) {
     for (const std::string& name : result.info.image_names) {
       result.maps.push_back(EvaluateOne(options, result.info, name));
+      result.maps.back().previews = ExistingPreviews(options.workspace, name);
       result.num_missing_maps += result.maps.back().missing ? 1 : 0;
     }
     result.average = AverageMetrics(result.maps);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -33,11 +34,24 @@ namespace fs = std::filesystem;
 
 constexpr int kSceneWidth = 320;
 constexpr int kSceneHeight = 240;
-constexpr int kMapWidth = 160;  // --PatchMatchStereo.max_image_size 160
+constexpr int kMapWidth = 160;  // kStereoWithPreviews's --PatchMatchStereo.max_image_size
 constexpr int kMapHeight = 120;
 constexpr int kNumViews = 4;
 
 const std::string kBin = MSP_BIN_DIR;
+const std::string kStereoWithPreviews =
+    kBin + "/msp_stereo --PatchMatchStereo.max_image_size 160 --MspStereo.write_previews 1";
+
+// The bundled scene, as msp_make_scene renders it, in `ws`.
+void MakeScene(const std::string& ws, uint64_t seed, int width, int height, int num_cameras) {
+  scene::GeneratorOptions options;
+  options.output = ws;
+  options.seed = seed;
+  options.rig.width = width;
+  options.rig.height = height;
+  options.rig.num_cameras = num_cameras;
+  scene::GenerateScene(options);
+}
 
 int RunLogged(const std::string& command, const std::string& log) {
   return std::system((command + " > " + log + " 2>&1").c_str());
@@ -73,17 +87,9 @@ class PreviewsTest : public testing::Test {
   static void SetUpTestSuite() {
     scratch_ = std::make_unique<test::TempDir>();
     ws_ = *scratch_ / "ws";
-    scene::GeneratorOptions options;
-    options.output = ws_;
-    options.seed = 2;
-    options.rig.width = kSceneWidth;
-    options.rig.height = kSceneHeight;
-    options.rig.num_cameras = kNumViews;
-    scene::GenerateScene(options);
+    MakeScene(ws_, /*seed=*/2, kSceneWidth, kSceneHeight, kNumViews);
     stereo_exit_code_ =
-        RunLogged(kBin + "/msp_stereo --workspace_path " + ws_ +
-                      " --PatchMatchStereo.max_image_size 160 --MspStereo.write_previews 1",
-                  ws_ + "/stereo.log");
+        RunLogged(kStereoWithPreviews + " --workspace_path " + ws_, ws_ + "/stereo.log");
   }
   static void TearDownTestSuite() { scratch_.reset(); }
 
@@ -161,10 +167,7 @@ TEST_F(PreviewsTest, PicturesMatchTheFinalMapsAndTheGroundTruth) {
 
 TEST_F(PreviewsTest, EvaluatorNamesThePicturesThatExistAndResumeKeepsThem) {
   const std::string before = test::ReadRaw(MapPreviewPath(ws_, "img_000.png", MapPreview::kDepth));
-  ASSERT_EQ(RunLogged(kBin + "/msp_stereo --workspace_path " + ws_ +
-                          " --PatchMatchStereo.max_image_size 160 --MspStereo.write_previews 1",
-                      ws_ + "/resume.log"),
-            0);
+  ASSERT_EQ(RunLogged(kStereoWithPreviews + " --workspace_path " + ws_, ws_ + "/resume.log"), 0);
   EXPECT_NE(test::ReadRaw(ws_ + "/resume.log").find("nothing to do"), std::string::npos);
   EXPECT_EQ(test::ReadRaw(MapPreviewPath(ws_, "img_000.png", MapPreview::kDepth)), before);
 
@@ -203,12 +206,7 @@ TEST_F(PreviewsTest, EvaluatorNamesThePicturesThatExistAndResumeKeepsThem) {
 TEST(Previews, WrittenWithoutThePrior) {
   const test::TempDir scratch;
   const std::string ws = scratch / "ws";
-  scene::GeneratorOptions options;
-  options.output = ws;
-  options.rig.width = 96;
-  options.rig.height = 64;
-  options.rig.num_cameras = 3;
-  scene::GenerateScene(options);
+  MakeScene(ws, /*seed=*/1, 96, 64, /*num_cameras=*/3);
   ASSERT_EQ(RunLogged(kBin + "/msp_stereo --workspace_path " + ws +
                           " --MspStereo.deformable 0 --MspStereo.write_previews 1",
                       ws + "/stereo.log"),

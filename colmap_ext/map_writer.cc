@@ -5,16 +5,33 @@
 #include <utility>
 
 #include "colmap_ext/dense_map_io.h"
+#include "colmap_ext/map_previews.h"
 #include "colmap_ext/prior_previews.h"
 #include "colmap_ext/workspace.h"
 
 namespace msp {
+namespace {
+
+// Throws std::invalid_argument unless depth and normal are 1- and 3-channel
+// maps of the same non-zero size (a back-end bug).
+void CheckMaps(const std::string& name, const DenseMap& depth, const DenseMap& normal) {
+  if (depth.channels != 1 || normal.channels != 3 || depth.width != normal.width ||
+      depth.height != normal.height || depth.Empty()) {
+    throw std::invalid_argument("MapWriter: depth (" + std::to_string(depth.channels) +
+                                " channels) and normal (" + std::to_string(normal.channels) +
+                                " channels) maps of " + name + " must be 1- and 3-channel " +
+                                "maps of the same non-zero size");
+  }
+}
+
+}  // namespace
 
 MapWriter::MapWriter(std::string workspace_path, std::vector<std::string> view_names,
-                     bool geom_consistency)
+                     bool geom_consistency, std::optional<GroundTruthInfo> ground_truth)
     : workspace_path_(std::move(workspace_path)),
       view_names_(std::move(view_names)),
-      final_type_(geom_consistency ? "geometric" : "photometric") {}
+      final_type_(geom_consistency ? "geometric" : "photometric"),
+      ground_truth_(std::move(ground_truth)) {}
 
 const std::string& MapWriter::Name(int view) const {
   if (view < 0 || view >= static_cast<int>(view_names_.size())) {
@@ -38,13 +55,7 @@ void MapWriter::Write(int view, const std::string& type, const DenseMap& depth,
   if (type != "photometric" && type != "geometric") {
     throw std::invalid_argument("MapWriter: unknown map type `" + type + "` for " + name);
   }
-  if (depth.channels != 1 || normal.channels != 3 || depth.width != normal.width ||
-      depth.height != normal.height || depth.Empty()) {
-    throw std::invalid_argument("MapWriter: depth (" + std::to_string(depth.channels) +
-                                " channels) and normal (" + std::to_string(normal.channels) +
-                                " channels) maps of " + name + " must be 1- and 3-channel " +
-                                "maps of the same non-zero size");
-  }
+  CheckMaps(name, depth, normal);
   // Depth first: HasFinalOutput needs both files, so a run interrupted
   // between the two writes recomputes this view instead of skipping it.
   WriteDenseMap(DepthMapPath(workspace_path_, name, type), depth);
@@ -56,6 +67,13 @@ void MapWriter::WritePriorPreview(int view, const DenseMap& color,
                                   const std::vector<uint8_t>& refined_edges) {
   msp::WritePriorPreview(PriorPreviewPath(workspace_path_, Name(view)), color, aggregated_edges,
                          refined_edges);
+}
+
+void MapWriter::WriteMapPreviews(int view, const DenseMap& depth, const DenseMap& normal) {
+  const std::string& name = Name(view);
+  CheckMaps(name, depth, normal);
+  msp::WriteMapPreviews(workspace_path_, name, depth, normal,
+                        ground_truth_ ? &*ground_truth_ : nullptr);
 }
 
 }  // namespace msp

@@ -2,9 +2,11 @@
 // under <workspace>/stereo/{depth,normal}_maps/<name>.<type>.bin.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "colmap_ext/ground_truth.h"
 #include "stereo.h"
 
 namespace msp {
@@ -13,8 +15,10 @@ class MapWriter : public MapSink {
  public:
   // `view_names[i]` is the image name of view i. The final output type is
   // "geometric" when `geom_consistency` is set, else "photometric", as in
-  // COLMAP's PatchMatchController.
-  MapWriter(std::string workspace_path, std::vector<std::string> view_names, bool geom_consistency);
+  // COLMAP's PatchMatchController. With `ground_truth` (the bundled scene's),
+  // the map previews include error previews of the images it lists.
+  MapWriter(std::string workspace_path, std::vector<std::string> view_names, bool geom_consistency,
+            std::optional<GroundTruthInfo> ground_truth = std::nullopt);
 
   // True when both final files (depth and normal) exist. Consistency graphs
   // are not required: nothing in COLMAP reads them.
@@ -33,6 +37,11 @@ class MapWriter : public MapSink {
                          const std::vector<uint8_t>& aggregated_edges,
                          const std::vector<uint8_t>& refined_edges) override;
 
+  // <workspace>/stereo/prior_previews/<name>.{depth,normal,error}.png
+  // (map_previews.h), each atomically; std::invalid_argument for maps Write
+  // would reject, InputError when a file cannot be read or written.
+  void WriteMapPreviews(int view, const DenseMap& depth, const DenseMap& normal) override;
+
   const std::string& final_type() const { return final_type_; }
 
  private:
@@ -41,6 +50,7 @@ class MapWriter : public MapSink {
   std::string workspace_path_;
   std::vector<std::string> view_names_;
   std::string final_type_;
+  std::optional<GroundTruthInfo> ground_truth_;
 };
 
 }  // namespace msp

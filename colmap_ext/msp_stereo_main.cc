@@ -7,9 +7,13 @@
 #include <exception>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "colmap_ext/errors.h"
+#include "colmap_ext/file_util.h"
+#include "colmap_ext/ground_truth.h"
 #include "colmap_ext/map_writer.h"
 #include "colmap_ext/workspace.h"
 #include "options/option_check.h"
@@ -73,11 +77,28 @@ void WarnAboutIgnoredOptions(const StereoCommandOptions& options) {
   }
   if (m.write_previews && !(m.segmentation_prior && m.deformable)) {
     std::cout << "WARNING: " << MSP_OPTION_FLAG(m, write_previews)
-              << " writes nothing: the segmentation prior does not run\n";
+              << " writes no prior previews: the segmentation prior does not run (the depth, "
+                 "normal and error previews are written)\n";
   }
   if (m.backend == "cpu" && p.gpu_index != defaults.gpu_index) {
     std::cout << "WARNING: " << MSP_OPTION_FLAG(p, gpu_index)
               << " is ignored by the cpu back-end\n";
+  }
+}
+
+// The ground truth the error previews compare with: <workspace>/ground_truth
+// when it is there (the bundled scene). One that cannot be read costs the
+// error previews, not the run.
+std::optional<GroundTruthInfo> PreviewGroundTruth(const std::string& workspace_path) {
+  const std::string dir = GroundTruthDir(workspace_path, "");
+  if (!IsDirectory(dir)) return std::nullopt;
+  try {
+    GroundTruthInfo info = ReadGroundTruthInfo(dir);
+    std::cout << "Error previews against the ground truth in " << dir << std::endl;
+    return info;
+  } catch (const InputError& e) {
+    std::cout << "WARNING: no error previews: " << e.what() << std::endl;
+    return std::nullopt;
   }
 }
 
@@ -108,7 +129,8 @@ int Run(int argc, char** argv) {
   std::vector<std::string> names;
   names.reserve(workspace.views.size());
   for (const View& view : workspace.views) names.push_back(view.name);
-  MapWriter writer(workspace.path, std::move(names), options.patch_match.geom_consistency);
+  MapWriter writer(workspace.path, std::move(names), options.patch_match.geom_consistency,
+                   options.msp.write_previews ? PreviewGroundTruth(workspace.path) : std::nullopt);
 
   RunStereo(workspace.views, workspace.problems, options.patch_match, options.msp,
             workspace.path + kScratchSubdir, writer);

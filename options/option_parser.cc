@@ -227,8 +227,11 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
                  "Label layers of the embedded segmenter for images without mask files (1.." +
                      std::to_string(core::kMaxLabelLayers) + "); mask files set their own count.");
   MSP_ADD_OPTION(t, *m, write_previews,
-                 "Write stereo/prior_previews/<image>.png with the aggregated (red) and refined "
-                 "(green) edges that confined the final pass, over the image.");
+                 "Write pictures of each image's final maps to stereo/prior_previews/: "
+                 "<image>.depth.png (colour scale, near red, far blue), <image>.normal.png, "
+                 "<image>.error.png (with <workspace>/ground_truth: green within 1%, yellow 5%, "
+                 "red beyond, grey no depth) and, with the segmentation prior, <image>.png with "
+                 "its aggregated (red) and refined (green) edges.");
   MSP_ADD_OPTION(t, *m, crf_alpha,
                  "(0, inf). CRF depth bandwidth as a fraction of the depth range (eq. 6 alpha).");
   MSP_ADD_OPTION(

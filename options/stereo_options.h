@@ -122,7 +122,8 @@ struct MspStereoOptions {
   bool edge_refinement = true;
   // Label layers the embedded segmenter builds for an image without mask files (paper: 3).
   int num_mask_levels = 3;
-  // Write <workspace>/stereo/prior_previews/<image>.png: aggregated (red), refined (green) edges.
+  // Write pictures to <workspace>/stereo/prior_previews/: <image>.{depth,normal,error}.png of the
+  // final maps (error with a ground_truth/ folder), <image>.png of the prior's edges.
   bool write_previews = false;
   // CRF (eq. 6) depth bandwidth alpha, as a fraction of the depth range.
   double crf_alpha = 0.02;

@@ -30,6 +30,12 @@ class MapSink {
   virtual void WritePriorPreview(int /*view*/, const DenseMap& /*color*/,
                                  const std::vector<uint8_t>& /*aggregated_edges*/,
                                  const std::vector<uint8_t>& /*refined_edges*/) {}
+  // With --MspStereo.write_previews: the final maps of `view`, the same that
+  // Write receives next, to draw as pictures (with or without the prior).
+  // Called before Write, so that a view whose final maps exist has its
+  // pictures too. A sink that keeps no pictures ignores them.
+  virtual void WriteMapPreviews(int /*view*/, const DenseMap& /*depth*/,
+                                const DenseMap& /*normal*/) {}
 };
 
 // Throws std::runtime_error when the back-end of --MspStereo.backend cannot

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "colmap_ext/ground_truth.h"
+
 namespace msp {
 namespace eval {
 namespace {
@@ -84,14 +86,9 @@ DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
                         textureless.rows == gt_depth.height;
   RegionAccumulator all, flat, textured;
   for (int row = 0; row < depth.height; ++row) {
-    // Nearest ground-truth pixel: predicted index * (GT size / predicted size).
-    const int gt_row = std::min(
-        gt_depth.height - 1,
-        static_cast<int>(std::lround(static_cast<double>(row) * gt_depth.height / depth.height)));
+    const int gt_row = NearestGroundTruthIndex(row, depth.height, gt_depth.height);
     for (int col = 0; col < depth.width; ++col) {
-      const int gt_col = std::min(
-          gt_depth.width - 1,
-          static_cast<int>(std::lround(static_cast<double>(col) * gt_depth.width / depth.width)));
+      const int gt_col = NearestGroundTruthIndex(col, depth.width, gt_depth.width);
       const float d_gt = gt_depth.At(gt_row, gt_col);
       if (!(d_gt > 0.0f)) continue;
       const bool in_flat = has_mask && textureless.at<uint8_t>(gt_row, gt_col) > 0;

@@ -3,6 +3,7 @@
 
 #include <opencv2/core.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base/dense_map.h"
@@ -32,11 +33,14 @@ struct DepthMapMetrics {
   RegionMetrics all;
   RegionMetrics textureless;
   RegionMetrics textured;  // the rest of the ground-truth pixels
+  // The pictures msp_stereo --MspStereo.write_previews left for the image, as
+  // (kind, path), only those that exist (ExistingPreviews, map_previews.h).
+  std::vector<std::pair<std::string, std::string>> previews;
 };
 
 // The prediction may be smaller than the ground truth (max_image_size): the
-// ground truth is sampled nearest-neighbour at each predicted pixel, the
-// mapping COLMAP's fusion uses (intrinsics scaled per axis). `normal` may be
+// ground truth is sampled nearest-neighbour at each predicted pixel
+// (NearestGroundTruthIndex, colmap_ext/ground_truth.h). `normal` may be
 // empty (then normal errors are 0). `textureless` is CV_8UC1 at GT size.
 DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
                                  const DenseMap& gt_depth, const DenseMap& gt_normal,

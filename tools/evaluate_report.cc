@@ -61,7 +61,31 @@ void JsonRegion(std::ostringstream& s, const RegionMetrics& m) {
     << ", \"median_normal_error_deg\": " << m.median_normal_error_deg << "}";
 }
 
-void JsonMap(std::ostringstream& s, const DepthMapMetrics& m) {
+// Where a person finds the pictures of each image, one line each.
+void PrintPreviews(const EvaluationResult& r, std::ostream& out) {
+  bool any = false;
+  for (const DepthMapMetrics& m : r.maps) any = any || !m.previews.empty();
+  if (!any) return;
+  out << "\nPreviews (depth, normal, error against the ground truth, segmentation prior):\n";
+  for (const DepthMapMetrics& m : r.maps) {
+    for (const auto& preview : m.previews) {
+      out << "  " << m.name << " " << preview.first << ": " << preview.second << "\n";
+    }
+  }
+}
+
+void JsonPreviews(std::ostringstream& s, const DepthMapMetrics& m) {
+  s << "{";
+  for (size_t i = 0; i < m.previews.size(); ++i) {
+    s << (i > 0 ? ", " : "") << "\"" << m.previews[i].first << "\": \"" << m.previews[i].second
+      << "\"";
+  }
+  s << "}";
+}
+
+// An image's figures; `with_previews` adds the pictures that exist (an
+// average has none).
+void JsonMap(std::ostringstream& s, const DepthMapMetrics& m, bool with_previews) {
   s << "{\"name\": \"" << m.name << "\", \"missing\": " << (m.missing ? "true" : "false")
     << ", \"width\": " << m.width << ", \"height\": " << m.height << ", \"all\": ";
   JsonRegion(s, m.all);
@@ -69,6 +93,10 @@ void JsonMap(std::ostringstream& s, const DepthMapMetrics& m) {
   JsonRegion(s, m.textureless);
   s << ", \"textured\": ";
   JsonRegion(s, m.textured);
+  if (with_previews) {
+    s << ", \"previews\": ";
+    JsonPreviews(s, m);
+  }
   s << "}";
 }
 
@@ -85,6 +113,7 @@ void PrintReport(const EvaluationResult& r, std::ostream& out) {
     PrintMapTable(r, Region::kTextureless, out);
     PrintMapTable(r, Region::kTextured, out);
     if (r.num_missing_maps > 0) out << r.num_missing_maps << " map(s) missing\n";
+    PrintPreviews(r, out);
   }
   if (r.has_cloud) {
     const CloudMetrics& c = r.cloud;
@@ -121,11 +150,11 @@ std::string ReportJson(const EvaluationResult& r) {
     << ",\n  \"depth_maps\": [\n";
   for (size_t i = 0; i < r.maps.size(); ++i) {
     s << "    ";
-    JsonMap(s, r.maps[i]);
+    JsonMap(s, r.maps[i], /*with_previews=*/true);
     s << (i + 1 < r.maps.size() ? ",\n" : "\n");
   }
   s << "  ],\n  \"average\": ";
-  JsonMap(s, r.average);
+  JsonMap(s, r.average, /*with_previews=*/false);
   s << ",\n  \"fused\": ";
   if (!r.has_cloud) {
     s << "null\n}\n";

@@ -5,6 +5,7 @@
 
 #include "colmap_ext/dense_map_io.h"
 #include "colmap_ext/errors.h"
+#include "colmap_ext/map_previews.h"
 #include "tools/ply_points.h"
 
 namespace msp {
@@ -45,13 +46,12 @@ DepthMapMetrics EvaluateOne(const EvaluationOptions& options, const GroundTruthI
 
 EvaluationResult EvaluateWorkspace(const EvaluationOptions& options) {
   EvaluationResult result;
-  const std::string gt_dir =
-      options.ground_truth.empty() ? options.workspace + "/ground_truth" : options.ground_truth;
-  result.info = ReadGroundTruthInfo(gt_dir);
+  result.info = ReadGroundTruthInfo(GroundTruthDir(options.workspace, options.ground_truth));
   result.input_type = options.input_type;
   if (options.evaluate_maps) {
     for (const std::string& name : result.info.image_names) {
       result.maps.push_back(EvaluateOne(options, result.info, name));
+      result.maps.back().previews = ExistingPreviews(options.workspace, name);
       result.num_missing_maps += result.maps.back().missing ? 1 : 0;
     }
     result.average = AverageMetrics(result.maps);

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "colmap_ext/ground_truth.h"
 #include "tools/evaluate_cloud.h"
 #include "tools/evaluate_depth.h"
-#include "tools/evaluate_ground_truth.h"
 
 namespace msp {
 namespace eval {

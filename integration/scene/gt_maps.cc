@@ -2,7 +2,7 @@
 
 #include "colmap_ext/dense_map_io.h"
 #include "colmap_ext/errors.h"
-#include "tools/evaluate_ground_truth.h"
+#include "colmap_ext/ground_truth.h"
 
 namespace msp {
 namespace scene {
@@ -13,9 +13,8 @@ int WriteGroundTruthMaps(const GroundTruthMapOptions& options) {
   if (options.input_type != "geometric" && options.input_type != "photometric") {
     throw InputError("--input_type must be geometric or photometric, not " + options.input_type);
   }
-  const std::string gt_dir =
-      options.ground_truth.empty() ? options.workspace + "/ground_truth" : options.ground_truth;
-  const eval::GroundTruthInfo info = eval::ReadGroundTruthInfo(gt_dir);
+  const GroundTruthInfo info =
+      ReadGroundTruthInfo(GroundTruthDir(options.workspace, options.ground_truth));
   for (const std::string& name : info.image_names) {
     DenseMap depth = ReadDenseMap(info.DepthMapPath(name));
     for (float& d : depth.data) d = static_cast<float>(d * options.depth_scale);

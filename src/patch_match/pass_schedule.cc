@@ -42,7 +42,8 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
   } else if (last_round && pm.geom_consistency && index == 0) {
     pass.output = PassOutput::kUnfiltered;
   }
-  pass.preview = final_pass && SegmentationPriorEnabled(msp) && msp.write_previews;
+  pass.prior_preview = final_pass && SegmentationPriorEnabled(msp) && msp.write_previews;
+  pass.map_previews = final_pass && msp.write_previews;
   return pass;
 }
 
@@ -96,7 +97,8 @@ std::string ToString(const Pass& pass) {
   if (pass.segment_planes) s += "; segment planes";
   if (pass.prior) s += "; prior";
   s += OutputName(pass.output);
-  if (pass.preview) s += "; previews";
+  if (pass.map_previews) s += "; map previews";
+  if (pass.prior_preview) s += "; prior preview";
   return s;
 }
 

@@ -65,7 +65,8 @@ struct Pass {
   bool segment_planes = false;  // segments offer their planes after the refinement
   bool prior = false;  // the segmentation prior runs after the pass
   PassOutput output = PassOutput::kNone;
-  bool preview = false;  // writes the prior preview (with kFinal)
+  bool prior_preview = false;  // writes the prior preview (with kFinal)
+  bool map_previews = false;   // writes the pictures of the final maps (with kFinal)
 };
 
 // Whether the segmentation prior runs at all: it confines anchors, so only

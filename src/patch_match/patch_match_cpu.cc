@@ -256,9 +256,9 @@ class CpuRunner {
     }
     if (pass.prior) RunPrior(pass, problem, &state);
     // Asked before the outputs are written: afterwards the image has them.
-    const bool preview = pass.preview && !sink_.HasFinalOutput(problem.ref);
+    const bool prior_preview = pass.prior_preview && !sink_.HasFinalOutput(problem.ref);
     if (pass.output != PassOutput::kNone) WriteOutputs(pass, params, problem);
-    if (preview) WritePreview(problem, state);
+    if (prior_preview) WritePriorPreview(problem, state);
     cache_.Put(problem.ref, std::move(state));
     cache_.EnforceBudget(problem.ref);
     std::printf(
@@ -320,7 +320,7 @@ class CpuRunner {
     state->edges = prior_->Run(input);
   }
 
-  void WritePreview(const Problem& problem, const PixelState& state) {
+  void WritePriorPreview(const Problem& problem, const PixelState& state) {
     if (state.edges.empty()) {
       std::printf("  no segmentation prior edges for %s (no deformable pass made any)\n",
                   views_[problem.ref].name.c_str());
@@ -361,6 +361,9 @@ class CpuRunner {
     filter.min_num_consistent = std::min(pm_.filter_min_num_consistent, params.num_src);
     filter.geom_max_error = static_cast<float>(pm_.filter_geom_consistency_max_cost);
     ExtractMaps(params, pm_.filter ? &filter : nullptr, threads_, &depth, &normal);
+    // Pictures before maps: a run stopped between them redoes the view, so
+    // every view with final maps has its pictures.
+    if (pass.map_previews) sink_.WriteMapPreviews(problem.ref, depth, normal);
     sink_.Write(problem.ref, pm_.geom_consistency ? "geometric" : "photometric", depth, normal);
   }
 

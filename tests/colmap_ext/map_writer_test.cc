@@ -7,8 +7,10 @@
 #include <string>
 
 #include "colmap_ext/dense_map_io.h"
+#include "colmap_ext/map_previews.h"
 #include "colmap_ext/prior_previews.h"
 #include "colmap_ext/workspace.h"
+#include "tests/support/files.h"
 #include "tests/support/temp_dir.h"
 
 namespace msp {
@@ -92,6 +94,30 @@ TEST_F(MapWriterTest, WritesPriorPreviewUnderTheDocumentedPath) {
   ASSERT_TRUE(fs::is_regular_file(path));
   EXPECT_GT(fs::file_size(path), 0u);
   EXPECT_THROW(writer.WritePriorPreview(2, color, aggregated, refined), std::invalid_argument);
+}
+
+// The pictures of the final maps go next to the prior preview; the error
+// picture needs the ground truth given to the writer. Bad maps are rejected
+// as Write rejects them, before anything is written.
+TEST_F(MapWriterTest, WritesMapPreviewsWithErrorOnlyAgainstGroundTruth) {
+  const std::string ws = workspace_.string();
+  test::WriteRaw(ws + "/ground_truth/images.txt", "sub/b.jpg\n");
+  test::WriteRaw(ws + "/ground_truth/scene.json", "{\"extent\": 2}");
+  WriteDenseMap(ws + "/ground_truth/depth_maps/sub/b.jpg.bin", Depth(2.0f));
+  MapWriter plain(ws, {"a.png", "sub/b.jpg"}, true);
+  EXPECT_THROW(plain.WriteMapPreviews(1, Normal(), Depth(2.0f)), std::invalid_argument);
+  EXPECT_THROW(plain.WriteMapPreviews(2, Depth(2.0f), Normal()), std::invalid_argument);
+  EXPECT_FALSE(fs::exists(workspace_ / "stereo"));
+  plain.WriteMapPreviews(1, Depth(2.0f), Normal());
+  EXPECT_TRUE(fs::is_regular_file(MapPreviewPath(ws, "sub/b.jpg", MapPreview::kDepth)));
+  EXPECT_TRUE(fs::is_regular_file(MapPreviewPath(ws, "sub/b.jpg", MapPreview::kNormal)));
+  EXPECT_FALSE(fs::exists(MapPreviewPath(ws, "sub/b.jpg", MapPreview::kError)));
+  MapWriter with_truth(ws, {"a.png", "sub/b.jpg"}, true, ReadGroundTruthInfo(ws + "/ground_truth"));
+  with_truth.WriteMapPreviews(1, Depth(2.0f), Normal());
+  EXPECT_TRUE(fs::is_regular_file(MapPreviewPath(ws, "sub/b.jpg", MapPreview::kError)));
+  with_truth.WriteMapPreviews(0, Depth(2.0f), Normal());  // not in the ground truth
+  EXPECT_FALSE(fs::exists(MapPreviewPath(ws, "a.png", MapPreview::kError)));
+  EXPECT_TRUE(fs::is_regular_file(MapPreviewPath(ws, "a.png", MapPreview::kDepth)));
 }
 
 }  // namespace

@@ -6,11 +6,11 @@
 
 #include "colmap_ext/dense_map_io.h"
 #include "colmap_ext/errors.h"
+#include "colmap_ext/ground_truth.h"
 #include "colmap_ext/sparse_model.h"
 #include "integration/scene/generate.h"
 #include "tests/support/files.h"
 #include "tests/support/temp_dir.h"
-#include "tools/evaluate_ground_truth.h"
 
 namespace msp {
 namespace scene {
@@ -93,7 +93,7 @@ TEST(SceneGenerator, WritesACompleteWorkspaceWithRealTracks) {
     }
   }
 
-  const eval::GroundTruthInfo info = eval::ReadGroundTruthInfo((ws / "ground_truth").string());
+  const GroundTruthInfo info = ReadGroundTruthInfo((ws / "ground_truth").string());
   EXPECT_EQ(info.image_names.size(), 5u);
   EXPECT_NEAR(info.extent, summary.extent, 1e-6);
   // Room-sized: a few metres.

@@ -45,7 +45,9 @@ TEST(PassSchedule, WithoutGeometricConsistencyOnePassWritesTheFinalMaps) {
 TEST(PassSchedule, WithoutDeformablePatchesNeitherClassesNorPrior) {
   MspStereoOptions msp;
   msp.deformable = false;
-  msp.write_previews = true;  // previews need the prior, which needs deformable patches
+  // The prior preview needs the prior, which needs deformable patches; the
+  // pictures of the final maps need neither.
+  msp.write_previews = true;
   EXPECT_EQ(Printed(PatchMatchStereoOptions(), msp),
             "round 1/1 (scale 1/1), pass 1 photometric (id 0): random start; 3 x checkerboard; "
             "refine; writes unfiltered maps\n"
@@ -54,7 +56,7 @@ TEST(PassSchedule, WithoutDeformablePatchesNeitherClassesNorPrior) {
             "round 1/1 (scale 1/1), pass 3 geometric (id 2): previous state; 3 x checkerboard; "
             "refine\n"
             "round 1/1 (scale 1/1), pass 4 geometric (id 3): previous state; 3 x checkerboard; "
-            "refine; writes final maps\n");
+            "refine; writes final maps; map previews\n");
 }
 
 TEST(PassSchedule, SeveralRoundsOnlyTheLastWrites) {
@@ -92,15 +94,15 @@ TEST(PassSchedule, SeveralRoundsWithoutGeometricConsistencyClassifyAtEachRoundSt
   pm.geom_consistency = false;
   MspStereoOptions msp;
   msp.write_previews = true;
-  // Previews show the prior's edges: without the prior there are none.
+  // The prior preview shows the prior's edges: without the prior there is none.
   for (bool prior : {true, false}) {
     msp.segmentation_prior = prior;
     EXPECT_EQ(Printed(pm, msp, 1500, 1000),
               "round 1/2 (scale 1/2), pass 1 photometric (id 0): random start; 3 x checkerboard; "
               "refine\n"
               "round 2/2 (scale 1/1), pass 1 photometric (id 8): upsampled state; 3 x deformable "
-              "(classified after pass 1); refine; writes final maps" +
-                  std::string(prior ? "; previews" : "") + "\n");
+              "(classified after pass 1); refine; writes final maps; map previews" +
+                  std::string(prior ? "; prior preview" : "") + "\n");
   }
 }
 

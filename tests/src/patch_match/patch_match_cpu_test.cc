@@ -28,9 +28,14 @@ class MemorySink : public MapSink {
     previews[view] = {aggregated, refined};
     preview_sizes[view] = {color.width, color.height};
   }
+  void WriteMapPreviews(int view, const DenseMap& depth, const DenseMap& normal) override {
+    EXPECT_FALSE(maps.count({view, "geometric"})) << "pictures come before the final maps";
+    map_previews[view] = {depth, normal};
+  }
   std::map<std::pair<int, std::string>, std::pair<DenseMap, DenseMap>> maps;
   std::map<int, std::pair<std::vector<uint8_t>, std::vector<uint8_t>>> previews;
   std::map<int, std::pair<int, int>> preview_sizes;
+  std::map<int, std::pair<DenseMap, DenseMap>> map_previews;
   std::map<int, bool> done;
 };
 
@@ -182,6 +187,37 @@ TEST(PatchMatchCpu, SpillingStateGivesIdenticalMaps) {
   pm.cache_size = 1e-6;  // ~1 kB
   RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), spilled);
   ExpectSameMaps(in_memory, spilled);
+}
+
+// With write_previews the pictures show exactly the final maps, with or
+// without deformable patches (and so the prior); a view whose outputs exist
+// gets none, and without the option there are none.
+TEST(PatchMatchCpu, MapPreviewsShowTheFinalMapsWithOrWithoutThePrior) {
+  const std::vector<View> views = test::RenderFrontoParallelPlane(40, 32, 3, kPlaneDepth, 0.25f);
+  PatchMatchStereoOptions pm;
+  const test::TempDir scratch;
+  for (bool deformable : {true, false}) {
+    SCOPED_TRACE(deformable ? "deformable" : "conventional");
+    MspStereoOptions msp;
+    msp.deformable = deformable;
+    msp.write_previews = true;
+    MemorySink sink;
+    sink.done[2] = true;
+    RunPatchMatchCpu(views, AllProblems(3), pm, msp, scratch.path(), sink);
+    ASSERT_EQ(sink.map_previews.size(), 2u);
+    for (int v = 0; v < 2; ++v) {
+      const auto& written = sink.maps.at({v, "geometric"});
+      EXPECT_EQ(sink.map_previews.at(v).first.data, written.first.data);
+      EXPECT_EQ(sink.map_previews.at(v).second.data, written.second.data);
+    }
+    EXPECT_EQ(sink.previews.size(), deformable ? 2u : 0u);  // the prior's own preview
+  }
+  MspStereoOptions msp;
+  msp.deformable = false;
+  MemorySink sink;
+  RunPatchMatchCpu(views, AllProblems(3), pm, msp, scratch.path(), sink);
+  EXPECT_EQ(sink.maps.size(), 6u);
+  EXPECT_TRUE(sink.map_previews.empty());
 }
 
 TEST(PatchMatchCpu, SkipsImagesWithFinalOutputs) {

@@ -1,5 +1,7 @@
-#include "tools/evaluate_ground_truth.h"
+#include "colmap_ext/ground_truth.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -7,7 +9,6 @@
 #include "colmap_ext/errors.h"
 
 namespace msp {
-namespace eval {
 namespace {
 
 std::string ReadFile(const std::string& path) {
@@ -36,6 +37,10 @@ std::string GroundTruthInfo::TexturelessPath(const std::string& name) const {
   return dir + "/textureless/" + name + ".png";
 }
 std::string GroundTruthInfo::SurfacePath() const { return dir + "/surface.ply"; }
+
+std::string GroundTruthDir(const std::string& workspace, const std::string& dir) {
+  return dir.empty() ? workspace + "/ground_truth" : dir;
+}
 
 bool FindJsonNumber(const std::string& json, const std::string& key, double* value) {
   const std::string quoted = "\"" + key + "\"";
@@ -76,5 +81,9 @@ GroundTruthInfo ReadGroundTruthInfo(const std::string& dir) {
   return info;
 }
 
-}  // namespace eval
+int NearestGroundTruthIndex(int index, int size, int gt_size) {
+  const double scaled = static_cast<double>(index) * gt_size / size;
+  return std::min(gt_size - 1, static_cast<int>(std::lround(scaled)));
+}
+
 }  // namespace msp

@@ -1,12 +1,13 @@
-// What the evaluator needs from a ground_truth/ folder written by
-// msp_make_scene: the image list, the scene extent and the default thresholds.
+// The ground_truth/ folder that msp_make_scene writes next to a workspace:
+// the image list, the scene extent, the evaluation thresholds and the paths of
+// the per-image maps. Read by the evaluator, by msp_write_gt_maps and by
+// msp_stereo's error previews, so that all three agree on the layout.
 #pragma once
 
 #include <string>
 #include <vector>
 
 namespace msp {
-namespace eval {
 
 struct GroundTruthInfo {
   std::string dir;
@@ -22,6 +23,9 @@ struct GroundTruthInfo {
   std::string SurfacePath() const;                             // surface.ply
 };
 
+// `dir`, or <workspace>/ground_truth when `dir` is empty.
+std::string GroundTruthDir(const std::string& workspace, const std::string& dir);
+
 // Reads <dir>/images.txt and <dir>/scene.json. Throws InputError naming the
 // file when one is missing or lacks a required key.
 GroundTruthInfo ReadGroundTruthInfo(const std::string& dir);
@@ -30,5 +34,10 @@ GroundTruthInfo ReadGroundTruthInfo(const std::string& dir);
 // generator's scene.json (no nesting of the keys looked up).
 bool FindJsonNumber(const std::string& json, const std::string& key, double* value);
 
-}  // namespace eval
+// A map may be smaller than the ground truth (--PatchMatchStereo.max_image_size):
+// pixel `index` of an axis of `size` pixels is compared with ground-truth
+// pixel round(index * gt_size / size), the nearest one under the per-axis
+// intrinsics scaling that COLMAP's fusion uses.
+int NearestGroundTruthIndex(int index, int size, int gt_size);
+
 }  // namespace msp

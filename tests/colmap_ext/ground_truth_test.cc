@@ -1,0 +1,50 @@
+#include "colmap_ext/ground_truth.h"
+
+#include <gtest/gtest.h>
+
+#include "colmap_ext/errors.h"
+#include "tests/support/files.h"
+#include "tests/support/temp_dir.h"
+
+namespace msp {
+namespace {
+
+TEST(GroundTruth, ReadsImagesExtentAndOptionalThresholds) {
+  const test::TempDir dir;
+  test::WriteRaw(dir / "images.txt", "a.png\n\n  b.png \n");
+  test::WriteRaw(dir / "scene.json", "{\"extent\": 4.5, \"depth_relative_threshold_2\": 0.1}");
+  const GroundTruthInfo info = ReadGroundTruthInfo(dir.path());
+  EXPECT_EQ(info.image_names, (std::vector<std::string>{"a.png", "b.png"}));
+  EXPECT_DOUBLE_EQ(info.extent, 4.5);
+  EXPECT_DOUBLE_EQ(info.depth_relative_thresholds[0], 0.01);  // default kept
+  EXPECT_DOUBLE_EQ(info.depth_relative_thresholds[1], 0.1);
+  EXPECT_EQ(info.DepthMapPath("a.png"), dir.path() + "/depth_maps/a.png.bin");
+}
+
+TEST(GroundTruth, MissingExtentOrFileIsAnInputError) {
+  const test::TempDir dir;
+  EXPECT_THROW(ReadGroundTruthInfo(dir.path()), InputError);  // no images.txt
+  test::WriteRaw(dir / "images.txt", "a.png\n");
+  test::WriteRaw(dir / "scene.json", "{\"extent\": 0}");
+  EXPECT_THROW(ReadGroundTruthInfo(dir.path()), InputError);
+}
+
+TEST(GroundTruth, DefaultFolderIsInsideTheWorkspace) {
+  EXPECT_EQ(GroundTruthDir("ws", ""), "ws/ground_truth");
+  EXPECT_EQ(GroundTruthDir("ws", "elsewhere"), "elsewhere");
+}
+
+// A map at half the ground truth's size compares pixel i with 2i; sizes that
+// do not divide round to the nearest pixel and never leave the image.
+TEST(GroundTruth, NearestIndexScalesPerAxisAndStaysInside) {
+  EXPECT_EQ(NearestGroundTruthIndex(0, 320, 640), 0);
+  EXPECT_EQ(NearestGroundTruthIndex(7, 320, 640), 14);
+  EXPECT_EQ(NearestGroundTruthIndex(4, 5, 5), 4);
+  EXPECT_EQ(NearestGroundTruthIndex(1, 3, 4), 1);       // 1.33 -> 1
+  EXPECT_EQ(NearestGroundTruthIndex(2, 3, 4), 3);       // 2.67 -> 3
+  EXPECT_EQ(NearestGroundTruthIndex(99, 100, 50), 49);  // 49.5 rounds up, clamped
+  for (int i = 0; i < 213; ++i) EXPECT_LT(NearestGroundTruthIndex(i, 213, 480), 480);
+}
+
+}  // namespace
+}  // namespace msp

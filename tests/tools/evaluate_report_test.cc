@@ -1,0 +1,65 @@
+#include "tools/evaluate_report.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+namespace msp {
+namespace eval {
+namespace {
+
+// Two images: one with pictures, one without.
+EvaluationResult TwoImages() {
+  EvaluationResult r;
+  r.info.dir = "ws/ground_truth";
+  r.info.image_names = {"a.png", "b.png"};
+  r.info.extent = 3.0;
+  r.input_type = "geometric";
+  r.maps.resize(2);
+  r.maps[0].name = "a.png";
+  r.maps[0].previews = {{"depth", "ws/stereo/prior_previews/a.png.depth.png"},
+                        {"error", "ws/stereo/prior_previews/a.png.error.png"}};
+  r.maps[1].name = "b.png";
+  r.average = AverageMetrics(r.maps);
+  return r;
+}
+
+TEST(EvaluateReport, TextNamesEveryPreviewThatExists) {
+  std::ostringstream out;
+  PrintReport(TwoImages(), out);
+  const std::string text = out.str();
+  EXPECT_NE(text.find("  a.png depth: ws/stereo/prior_previews/a.png.depth.png\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("  a.png error: ws/stereo/prior_previews/a.png.error.png\n"),
+            std::string::npos);
+  EXPECT_EQ(text.find("a.png normal"), std::string::npos);
+  EXPECT_EQ(text.find("  b.png "), std::string::npos);
+}
+
+TEST(EvaluateReport, TextHasNoPreviewSectionWithoutPreviews) {
+  EvaluationResult r = TwoImages();
+  r.maps[0].previews.clear();
+  std::ostringstream out;
+  PrintReport(r, out);
+  EXPECT_EQ(out.str().find("Previews"), std::string::npos) << out.str();
+}
+
+TEST(EvaluateReport, JsonHasAPreviewObjectPerImage) {
+  const std::string json = ReportJson(TwoImages());
+  EXPECT_NE(json.find("\"previews\": {\"depth\": \"ws/stereo/prior_previews/a.png.depth.png\", "
+                      "\"error\": \"ws/stereo/prior_previews/a.png.error.png\"}"),
+            std::string::npos)
+      << json;
+  const size_t b = json.find("\"name\": \"b.png\"");
+  ASSERT_NE(b, std::string::npos);
+  EXPECT_NE(json.find("\"previews\": {}", b), std::string::npos);
+  const size_t average = json.find("\"average\":");
+  ASSERT_NE(average, std::string::npos);
+  EXPECT_EQ(json.find("\"previews\"", average), std::string::npos);  // figures only
+}
+
+}  // namespace
+}  // namespace eval
+}  // namespace msp

@@ -200,9 +200,6 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
                  "After each pass but the last, fit a plane to the reliable pixels of each colour "
                  "segment (RANSAC) and offer it to the segment's pixels: textureless pixels take "
                  "it unless the views reject it, textured ones only when it matches better.");
-  MSP_ADD_OPTION(t, *m, surface_normals,
-                 "Weakly textured pixels of the final maps take the normal of the surface their "
-                 "neighbours' depths describe (fusion compares normals across views).");
   MSP_ADD_OPTION(t, *m, reliable_max_cost,
                  "[0, 2]. A pixel whose lowest disparity-curve minimum costs more is unreliable.");
   MSP_ADD_OPTION(t, *m, reliable_single_cost,

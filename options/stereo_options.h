@@ -103,9 +103,6 @@ struct MspStereoOptions {
   // After each pass but the last, colour segments' reliable pixels give each segment a plane that
   // its textureless pixels take (docs/method.md section 5.1); false = no segment planes.
   bool segment_planes = true;
-  // Weakly textured pixels of the final maps take the normal of the surface their neighbours'
-  // depths describe (docs/method.md section 5.2); false = the normals patch match left.
-  bool surface_normals = true;
   // Cost (1 - NCC, in [0, 2]) above which the lowest cost-curve minimum is unreliable (APD: 0.5).
   double reliable_max_cost = 0.5;
   // Cost (1 - NCC) at or below which a single curve minimum is reliable (APD: 0.15).

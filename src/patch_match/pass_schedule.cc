@@ -1,5 +1,6 @@
 #include "patch_match/pass_schedule.h"
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -23,12 +24,15 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
   pass.start =
       first ? PassStart::kRandom : (index == 0 ? PassStart::kUpsampled : PassStart::kPrevious);
   // The first pass has no planes to classify: it runs the conventional sweeps.
-  const bool deformable = msp.deformable && !first;
+  const bool last_round_ = round == num_rounds - 1;
+  const bool round_deformable = msp.deformable && !(round > 0 && last_round_ && getenv("MSP_FINEST_CONV"));
+  const bool deformable = round_deformable && !first;
+  if (round > 0 && last_round_ && getenv("MSP_FINEST_ITERS")) pass.iterations = atoi(getenv("MSP_FINEST_ITERS"));
   pass.sweeps = deformable ? PassSweeps::kDeformable : PassSweeps::kCheckerboard;
   // A round's first pass classifies with the thresholds after the coarser
   // round's last pass; the others take the classes of the previous refine.
   if (deformable && index == 0) pass.classify_after = num_passes - 1;
-  pass.refine_classifies = msp.deformable && index + 1 < num_passes;
+  pass.refine_classifies = round_deformable && index + 1 < num_passes;
   const bool last_round = round == num_rounds - 1;
   const bool final_pass = last_round && index == num_passes - 1;
   // The prior's edges confine the passes after the one that made them, so

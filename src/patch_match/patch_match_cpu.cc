@@ -251,9 +251,6 @@ class CpuRunner {
     }
     const double refine_seconds = SecondsSince(refine_start);
     if (pass.segment_planes) RunSegmentPlanes(params, problem);
-    if (msp_.surface_normals && (pass.output == PassOutput::kFinal || getenv("MSP_SN_ALL"))) {
-      SurfaceNormalsState(params, threads_);
-    }
     if (pass.prior) RunPrior(pass, problem, &state);
     // Asked before the outputs are written: afterwards the image has them.
     const bool prior_preview = pass.prior_preview && !sink_.HasFinalOutput(problem.ref);
@@ -360,6 +357,7 @@ class CpuRunner {
         static_cast<float>(pm_.filter_min_triangulation_angle) * kDegreesToRadians;
     filter.min_num_consistent = std::min(pm_.filter_min_num_consistent, params.num_src);
     filter.geom_max_error = static_cast<float>(pm_.filter_geom_consistency_max_cost);
+    filter.textureless_by_geometry = getenv("MSP_TBG") ? 1 : 0;
     ExtractMaps(params, pm_.filter ? &filter : nullptr, threads_, &depth, &normal);
     // Pictures before maps: a run stopped between them redoes the view, so
     // every view with final maps has its pictures.

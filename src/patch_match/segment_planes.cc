@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "base/parallel_for.h"
 #include "core/math/plane.h"
@@ -15,9 +14,20 @@
 namespace msp {
 namespace {
 
-// A pixel is reliable when its window has texture and its plane matches:
-// (1 - NCC) averaged over its selected views below this.
+// The segments: the finest granularity of the embedded segmenter's three
+// (multiscale_segmentation.h), where a wall, the floor and each face of a
+// box are segments of their own. (Coarser ones merge surfaces and measured
+// worse: docs/method.md section 5.1.)
+constexpr int kSegmentLevel = 2;
+constexpr int kNumSegmentLevels = 3;
+// A pixel supports its segment's plane when it sits on an edge of the image
+// (a crease, a silhouette, texture) whose window matches: (1 - NCC) over its
+// selected views below kReliableCost. Only the edge itself: a pixel a few
+// pixels off a crease has a textured window too, but holds whichever of the
+// two planes meeting there propagated to it, and on a floor below a wall
+// those would outvote the floor's own points.
 constexpr float kReliableCost = 0.3f;
+constexpr float kMinEdgeStrength = 0.03f;  // intensity per pixel (EdgeStrength)
 // RANSAC: hypotheses per segment; at most this many support points scored.
 constexpr int kRansacIterations = 64;
 constexpr int kMaxScoredPoints = 2048;
@@ -40,40 +50,53 @@ struct SupportPoint {
   core::Vec3 X;  // camera frame
 };
 
-// Second-largest eigenvalue of the covariance of 2D positions.
-template <typename Positions>
-double SecondSpread(const Positions& positions) {
-  if (positions.size() < 3) return 0.0;
-  double mx = 0, my = 0;
-  for (const auto& p : positions) {
-    mx += p.col;
-    my += p.row;
-  }
-  mx /= positions.size();
-  my /= positions.size();
-  double xx = 0, yy = 0, xy = 0;
-  for (const auto& p : positions) {
-    xx += (p.col - mx) * (p.col - mx);
-    yy += (p.row - my) * (p.row - my);
-    xy += (p.col - mx) * (p.row - my);
-  }
-  xx /= positions.size();
-  yy /= positions.size();
-  xy /= positions.size();
-  const double half_trace = 0.5 * (xx + yy);
-  const double det = xx * yy - xy * xy;
-  return half_trace - std::sqrt(std::max(0.0, half_trace * half_trace - det));
-}
 
 struct PixelPosition {
   int col, row;
 };
 
+// Second-largest eigenvalue of the covariance of pixel positions (squared
+// pixels): how far they spread across their main direction.
+double SecondSpread(const std::vector<PixelPosition>& positions) {
+  if (positions.size() < 3) return 0.0;
+  double mx = 0, my = 0;
+  for (const PixelPosition& p : positions) {
+    mx += p.col;
+    my += p.row;
+  }
+  const double n = static_cast<double>(positions.size());
+  mx /= n;
+  my /= n;
+  double xx = 0, yy = 0, xy = 0;
+  for (const PixelPosition& p : positions) {
+    xx += (p.col - mx) * (p.col - mx);
+    yy += (p.row - my) * (p.row - my);
+    xy += (p.col - mx) * (p.row - my);
+  }
+  xx /= n;
+  yy /= n;
+  xy /= n;
+  const double half_trace = 0.5 * (xx + yy);
+  const double det = xx * yy - xy * xy;
+  return half_trace - std::sqrt(std::max(0.0, half_trace * half_trace - det));
+}
+
 bool IsInlier(const core::PassParams& p, float focal_baseline, const SupportPoint& s,
               core::Vec3 normal, core::Vec3 point) {
-  const core::PlaneHypothesis h = core::HypothesisOnPlane(p.ref_camera, s.col, s.row, normal, point);
+  const core::PlaneHypothesis h =
+      core::HypothesisOnPlane(p.ref_camera, s.col, s.row, normal, point);
   if (!(h.depth > 0.0f)) return false;
   return std::fabs(focal_baseline / h.depth - focal_baseline / s.X.z) < kInlierDisparity;
+}
+
+std::vector<const SupportPoint*> Inliers(const core::PassParams& p, float focal_baseline,
+                                         const std::vector<SupportPoint>& support,
+                                         const SegmentPlane& plane) {
+  std::vector<const SupportPoint*> inliers;
+  for (const SupportPoint& s : support) {
+    if (IsInlier(p, focal_baseline, s, plane.normal, plane.point)) inliers.push_back(&s);
+  }
+  return inliers;
 }
 
 // Least-squares plane of the inliers: their centroid and the direction of least spread.
@@ -94,13 +117,14 @@ void RefitPlane(const std::vector<const SupportPoint*>& inliers, SegmentPlane* p
                             static_cast<float>(mean.z())};
 }
 
+// RANSAC over triples of the support, scored on an even subsample of large
+// supports, then a least-squares refit on the inliers and the checks.
 SegmentPlane FitOnePlane(const core::PassParams& p, float focal_baseline,
                          const std::vector<SupportPoint>& support, double segment_spread,
                          uint64_t key) {
   SegmentPlane best;
   best.num_support = static_cast<int>(support.size());
   if (static_cast<int>(support.size()) < kMinInliers) return best;
-  // Score on an even subsample of large supports.
   const size_t stride = (support.size() + kMaxScoredPoints - 1) / kMaxScoredPoints;
   core::Rng rng = core::MakeRng(key);
   const auto pick = [&]() {
@@ -114,7 +138,7 @@ SegmentPlane FitOnePlane(const core::PassParams& p, float focal_baseline,
     const SupportPoint* c = pick();
     const core::Vec3 n = core::Cross(b->X - a->X, c->X - a->X);
     const float len = core::Norm(n);
-    if (!(len > 1e-9f)) continue;
+    if (!(len > 1e-9f)) continue;  // a repeated or collinear triple
     const core::Vec3 normal = (1.0f / len) * n;
     int count = 0;
     for (size_t k = 0; k < support.size(); k += stride) {
@@ -127,19 +151,18 @@ SegmentPlane FitOnePlane(const core::PassParams& p, float focal_baseline,
     }
   }
   if (best_count == 0) return best;
-  std::vector<const SupportPoint*> inliers;
-  for (const SupportPoint& s : support) {
-    if (IsInlier(p, focal_baseline, s, best.normal, best.point)) inliers.push_back(&s);
-  }
-  if (inliers.size() >= 3) RefitPlane(inliers, &best);
+  const std::vector<const SupportPoint*> first = Inliers(p, focal_baseline, support, best);
+  if (first.size() >= 3) RefitPlane(first, &best);
   std::vector<PixelPosition> positions;
-  for (const SupportPoint& s : support) {
-    if (IsInlier(p, focal_baseline, s, best.normal, best.point)) positions.push_back({s.col, s.row});
+  for (const SupportPoint* s : Inliers(p, focal_baseline, support, best)) {
+    positions.push_back({s->col, s->row});
   }
-  const int count = static_cast<int>(positions.size());
-  const bool supported = count >= kMinInliers && count >= kMinInlierShare * support.size();
-  const bool spans = SecondSpread(positions) >= kMinSpreadShare * kMinSpreadShare * segment_spread;
-  best.num_inliers = supported && spans ? count : 0;
+  best.num_inliers = static_cast<int>(positions.size());
+  const bool supported =
+      best.num_inliers >= kMinInliers && best.num_inliers >= kMinInlierShare * support.size();
+  const bool spans =
+      SecondSpread(positions) >= kMinSpreadShare * kMinSpreadShare * segment_spread;
+  best.accepted = supported && spans;
   return best;
 }
 
@@ -161,7 +184,19 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
       if (!reliable[i]) continue;
       const core::Vec3 X = core::BackProject(params.ref_camera, static_cast<float>(col),
                                              static_cast<float>(row), s.depth[i]);
-      support[labels[i]].push_back({col, row, X});
+      // A pixel on a segment's border (a crease, a silhouette) supports the
+      // segments on both sides: a crease lies on both planes.
+      int added[5];
+      int num_added = 0;
+      const int nc[5] = {col, col - 1, col + 1, col, col};
+      const int nr[5] = {row, row, row, row - 1, row + 1};
+      for (int k = 0; k < 5; ++k) {
+        if (nc[k] < 0 || nr[k] < 0 || nc[k] >= s.width || nr[k] >= s.height) continue;
+        const int id = labels[s.Index(nc[k], nr[k])];
+        if (id <= 0 || std::find(added, added + num_added, id) != added + num_added) continue;
+        added[num_added++] = id;
+        support[id].push_back({col, row, X});
+      }
     }
   }
   const float focal_baseline = params.ref_camera.fx * core::MeanBaseline(params, 0u);
@@ -177,11 +212,8 @@ SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params, const Den
                                        int num_threads) {
   const core::PixelStateView& s = params.state;
   const int n = s.width * s.height;
-  // Scene-level granularity: a wall or a floor is one segment.
-  const char* lv = getenv("MSP_SP_LEVEL");
-  const int level = lv ? atoi(lv) : 0;
   const std::vector<int32_t> labels =
-      SegmentGraph(color, SegmentationScale(level, 3, color.width, color.height));
+      SegmentGraph(color, SegmentationScale(kSegmentLevel, kNumSegmentLevels, color.width, color.height));
   std::vector<float> texture(n);
   ParallelFor(0, s.height, num_threads, [&](int row) {
     for (int col = 0; col < s.width; ++col) {
@@ -189,20 +221,25 @@ SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params, const Den
     }
   });
   std::vector<uint8_t> reliable(n);
-  for (int i = 0; i < n; ++i) {
-    reliable[i] = texture[i] >= core::kTexturedWindowStd && s.depth[i] > 0.0f && s.cost[i] < kReliableCost;
-  }
+  ParallelFor(0, s.height, num_threads, [&](int row) {
+    for (int col = 0; col < s.width; ++col) {
+      const int i = s.Index(col, row);
+      reliable[i] = texture[i] >= core::kTexturedWindowStd && s.depth[i] > 0.0f &&
+                    s.cost[i] < kReliableCost &&
+                    core::EdgeStrength(params.ref_image, col, row) >= kMinEdgeStrength;
+    }
+  });
   const uint64_t key = core::RngKey(params.seed, params.image_id, params.pass_id, 0x5E6u, 0u);
   const std::vector<SegmentPlane> planes = FitSegmentPlanes(params, labels, reliable, key);
   SegmentPlanesReport report;
   report.num_segments = static_cast<int>(planes.size()) - 1;
-  for (const SegmentPlane& plane : planes) report.num_planes += plane.num_inliers > 0 ? 1 : 0;
+  for (const SegmentPlane& plane : planes) report.num_planes += plane.accepted ? 1 : 0;
   std::vector<int> taken(s.height, 0), offered(s.height, 0);
   ParallelFor(0, s.height, num_threads, [&](int row) {
     for (int col = 0; col < s.width; ++col) {
       const int i = s.Index(col, row);
       const SegmentPlane& plane = planes[labels[i]];
-      if (plane.num_inliers == 0) continue;
+      if (!plane.accepted) continue;
       ++offered[row];
       const core::PlaneHypothesis candidate =
           core::HypothesisOnPlane(params.ref_camera, col, row, plane.normal, plane.point);

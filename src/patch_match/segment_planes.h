@@ -21,6 +21,7 @@ struct SegmentPlane {
   core::Vec3 point;   // a point of the plane, camera frame
   int num_support = 0;  // reliable pixels of the segment
   int num_inliers = 0;
+  bool accepted = false;  // enough inliers, spanning two image directions
 };
 
 struct SegmentPlanesReport {
@@ -32,8 +33,8 @@ struct SegmentPlanesReport {
 
 // Fits the plane of every segment of `labels` (ids 1..K, 0 = none) from the
 // pixels of `reliable` (1 = reliable), RANSAC seeded by `key`; segments
-// without a well-supported plane that spans two image directions get none
-// (num_inliers = 0). Index = segment id.
+// without a well-supported plane that spans two image directions are not
+// accepted. Index = segment id.
 std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
                                            const std::vector<int32_t>& labels,
                                            const std::vector<uint8_t>& reliable, uint64_t key);

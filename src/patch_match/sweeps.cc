@@ -5,8 +5,6 @@
 #include <vector>
 
 #include "base/parallel_for.h"
-#include "core/patch_match/surface_normal.h"
-#include "core/patch_match/window_texture.h"
 
 namespace msp {
 namespace {
@@ -94,19 +92,6 @@ void MedianFilterState(const core::PassParams& params, int num_threads) {
 void LocalRefineState(const core::PassParams& params, int num_threads) {
   ForEachPixel(params, num_threads,
                [&](int col, int row) { core::LocalRefinePixel(params, col, row); });
-}
-
-void SurfaceNormalsState(const core::PassParams& params, int num_threads) {
-  const core::PixelStateView& s = params.state;
-  // Normals are written only where the depth is read: chords see the depths
-  // of this pass, whatever order the rows run in.
-  ForEachPixel(params, num_threads, [&](int col, int row) {
-    if (!core::IsWeaklyTextured(params, col, row)) return;
-    core::Vec3 n;
-    if (!core::SurfaceNormalAt(params.ref_camera, s, col, row, &n)) return;
-    const int i = s.Index(col, row);
-    s.Set(i, core::PlaneHypothesis{s.depth[i], n});
-  });
 }
 
 void ExtractMaps(const core::PassParams& params, const core::FilterParams* filter, int num_threads,

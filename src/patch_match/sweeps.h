@@ -20,9 +20,6 @@ void RunCheckerboardIterations(const core::PassParams& params, int num_iteration
 void MedianFilterState(const core::PassParams& params, int num_threads);
 // The +-5 px disparity sweep with fixed normals.
 void LocalRefineState(const core::PassParams& params, int num_threads);
-// Weakly textured pixels take the normal of the surface their neighbours'
-// depths describe (core/patch_match/surface_normal.h).
-void SurfaceNormalsState(const core::PassParams& params, int num_threads);
 // Depth and normal maps of the state; with `filter`, only pixels with enough
 // consistent views keep their depth (the rest are 0).
 void ExtractMaps(const core::PassParams& params, const core::FilterParams* filter, int num_threads,

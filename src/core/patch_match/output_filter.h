@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/patch_match/patch_match_kernel.h"
+#include "core/patch_match/window_texture.h"
 
 namespace msp {
 namespace core {
@@ -15,6 +16,9 @@ struct FilterParams {
   float min_triangulation_angle;  // radians
   int min_num_consistent;         // already clamped to the number of sources
   float geom_max_error;           // filter_geom_consistency_max_cost, pixels
+  // 1: in geometric passes a weakly textured pixel (window_texture.h), whose
+  // NCC is noise, counts the views that agree geometrically, without the NCC test.
+  int textureless_by_geometry;
 };
 
 // Angle at X between the rays from the two camera centres.
@@ -34,13 +38,16 @@ MSP_HD int CountConsistentViews(const PassParams& p, const FilterParams& f, int 
                                                       static_cast<float>(row), h.depth));
   RefWindow w;
   PrepareWindow(p, col, row, &w);
+  const bool by_geometry =
+      f.textureless_by_geometry && p.geometric && IsWeaklyTextured(p, col, row);
   int count = 0;
   for (int j = 0; j < p.num_src; ++j) {
     const SourceView& s = p.src[j];
     if (TriangulationAngle(p.ref_camera.center, s.camera.center, X) < f.min_triangulation_angle) {
       continue;
     }
-    if (1.0f - PhotometricViewCost(p, w, j, plane) < f.min_ncc) continue;
+    if (by_geometry && s.depth.data == nullptr) continue;
+    if (!by_geometry && 1.0f - PhotometricViewCost(p, w, j, plane) < f.min_ncc) continue;
     if (p.geometric && s.depth.data != nullptr &&
         ReprojectionError(p.ref_camera, s.camera, s.depth, col, row, h.depth,
                           f.geom_max_error + 1.0f) > f.geom_max_error) {

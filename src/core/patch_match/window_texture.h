@@ -37,6 +37,16 @@ MSP_HD float WindowTextureStd(const PassParams& p, int col, int row) {
   return var > 0.0f ? sqrtf(var) : 0.0f;
 }
 
+// Largest central difference of the reference image at (col, row), in
+// intensity per pixel: high on edges and texture, noise-level on a flat wall.
+MSP_HD float EdgeStrength(const ImageView& image, int col, int row) {
+  const int l = col > 0 ? col - 1 : col, r = col + 1 < image.width ? col + 1 : col;
+  const int u = row > 0 ? row - 1 : row, d = row + 1 < image.height ? row + 1 : row;
+  const float gx = fabsf(image.At(r, row) - image.At(l, row));
+  const float gy = fabsf(image.At(col, d) - image.At(col, u));
+  return gx > gy ? gx : gy;
+}
+
 MSP_HD bool IsWeaklyTextured(const PassParams& p, int col, int row) {
   return WindowTextureStd(p, col, row) < kTexturedWindowStd;
 }

@@ -322,7 +322,7 @@ class CpuRunner {
       case PassStart::kRandom:
         return PixelState(cam.width, cam.height);
       case PassStart::kUpsampled:
-        return UpsampleState(cache_.Take(problem.ref), coarser_->cameras.at(problem.ref), cam);
+        return UpsampleStateNearest(cache_.Take(problem.ref), coarser_->cameras.at(problem.ref), cam);
       case PassStart::kPrevious:
         break;
     }

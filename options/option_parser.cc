@@ -186,6 +186,10 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
   MSP_ADD_OPTION(t, *m, coarsest_image_size,
                  "Coarse-to-fine rounds halve the images until the larger side is at most this "
                  "many pixels; one round when the images are already that small.");
+  MSP_ADD_OPTION(t, *m, joint_bilateral_upsampling,
+                 "Carry each pixel's plane up to the next round from the coarse pixel among the "
+                 "3x3 around it that a joint-bilateral vote guided by the image picks (ACMM), so "
+                 "depth edges follow image edges; false = the coarse pixel it falls in.");
   MSP_ADD_OPTION(t, *m, window_step,
                  "{1, 2}. Sampling step inside the matching window (2 = the paper's every other "
                  "row and column); replaces " +

@@ -94,6 +94,8 @@ struct MspStereoOptions {
   std::string mask_path = "";
   // Coarse-to-fine rounds halve the images until the larger side is at most this (pixels).
   int coarsest_image_size = 1000;
+  // Carry planes up a round by an image-guided joint-bilateral vote (ACMM); false = nearest.
+  bool joint_bilateral_upsampling = true;
   // Pixel step between window samples, 1 or 2 (paper: 2); replaces --PatchMatchStereo.window_step.
   int window_step = 2;
   // Bilateral NCC weights (COLMAP's sigma_spatial, sigma_color) instead of APD-MVS's uniform ones.

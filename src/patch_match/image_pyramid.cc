@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 
 #include "core/math/plane.h"
+#include "core/patch_match/joint_bilateral.h"
 
 namespace msp {
 
@@ -42,8 +45,17 @@ core::Camera HalveCamera(const core::Camera& camera, int new_width, int new_heig
   return out;
 }
 
-PixelState UpsampleState(const PixelState& coarse, const core::Camera& coarse_cam,
-                         const core::Camera& fine_cam) {
+namespace {
+
+// The pixel index nearest to coordinate x, clamped to [0, size).
+int NearestIndex(float x, int size) {
+  return std::min(size - 1, std::max(0, static_cast<int>(std::floor(x + 0.5f))));
+}
+
+}  // namespace
+
+PixelState UpsampleStateNearest(const PixelState& coarse, const core::Camera& coarse_cam,
+                                const core::Camera& fine_cam) {
   PixelState fine(fine_cam.width, fine_cam.height);
   const core::PixelStateView fv = fine.View();
   const float sx = static_cast<float>(coarse_cam.width) / fine_cam.width;
@@ -65,6 +77,63 @@ PixelState UpsampleState(const PixelState& coarse, const core::Camera& coarse_ca
       const float depth = core::DepthOnPlane(fine_cam, h.normal, dist, static_cast<float>(c),
                                              static_cast<float>(r));
       if (depth > 0.0f) fv.Set(fi, core::PlaneHypothesis{depth, h.normal});
+    }
+  }
+  return fine;
+}
+
+PixelState UpsampleStateJointBilateral(const PixelState& coarse, const DenseMap& coarse_guide,
+                                       const core::Camera& coarse_cam, const DenseMap& fine_guide,
+                                       const core::Camera& fine_cam) {
+  if (coarse_guide.width != coarse.width || coarse_guide.height != coarse.height ||
+      fine_guide.width != fine_cam.width || fine_guide.height != fine_cam.height) {
+    throw std::logic_error("UpsampleStateJointBilateral: guide and state sizes differ");
+  }
+  // Nearest neighbour gives the edge bits, and the pixels no plane reaches.
+  PixelState fine = UpsampleStateNearest(coarse, coarse_cam, fine_cam);
+  const core::PixelStateView fv = fine.View();
+  // Distance terms of the coarse planes, each shared by ~36 fine pixels.
+  std::vector<float> dist(coarse.depth.size(), 0.0f);
+  for (int cr = 0; cr < coarse.height; ++cr) {
+    for (int cc = 0; cc < coarse.width; ++cc) {
+      const int ci = cr * coarse.width + cc;
+      const core::PlaneHypothesis h = coarse.Plane(ci);
+      if (h.depth > 0.0f) dist[ci] = core::PlaneDistance(coarse_cam, cc, cr, h);
+    }
+  }
+  // Fine pixels per coarse pixel (2). The cameras differ only in K, so a
+  // fine pixel's coarse position (uc, vc) follows from the intrinsics.
+  const float ax = fine_cam.fx / coarse_cam.fx;
+  const float ay = fine_cam.fy / coarse_cam.fy;
+  for (int r = 0; r < fine.height; ++r) {
+    const float vc = coarse_cam.cy + (r - fine_cam.cy) / ay;
+    const int cr = NearestIndex(vc, coarse.height);
+    for (int c = 0; c < fine.width; ++c) {
+      const float uc = coarse_cam.cx + (c - fine_cam.cx) / ax;
+      const int cc = NearestIndex(uc, coarse.width);
+      const float guide = fine_guide.At(r, c);
+      float depth[core::kJbuNumCandidates], weight[core::kJbuNumCandidates];
+      int index[core::kJbuNumCandidates];
+      int n = 0;
+      for (int k = 0; k < core::kJbuNumCandidates; ++k) {
+        const int qc = cc + core::kJbuOffsetCol[k];
+        const int qr = cr + core::kJbuOffsetRow[k];
+        if (qc < 0 || qr < 0 || qc >= coarse.width || qr >= coarse.height) continue;
+        const int qi = qr * coarse.width + qc;
+        if (!(coarse.depth[qi] > 0.0f)) continue;
+        const float d = core::DepthOnPlane(fine_cam, coarse.Plane(qi).normal, dist[qi],
+                                           static_cast<float>(c), static_cast<float>(r));
+        if (!(d > 0.0f)) continue;
+        weight[n] = core::JointBilateralWeight((qc - uc) * ax, (qr - vc) * ay,
+                                               guide - coarse_guide.At(qr, qc));
+        depth[n] = d;
+        index[n++] = qi;
+      }
+      const int best = core::WeightedDepthMode(depth, weight, n);
+      if (best < 0) continue;
+      const int fi = fv.Index(c, r);
+      fv.Set(fi, core::PlaneHypothesis{depth[best], coarse.Plane(index[best]).normal});
+      fine.mask[fi] = coarse.mask[index[best]];
     }
   }
   return fine;

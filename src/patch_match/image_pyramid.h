@@ -19,10 +19,27 @@ DenseMap DownsampleHalf(const DenseMap& image);
 core::Camera HalveCamera(const core::Camera& camera, int new_width, int new_height);
 
 // Planes of `coarse` (camera `coarse_cam`) carried to every pixel of the finer
-// image (camera `fine_cam`): each fine pixel continues the plane of the coarse
-// pixel it falls in, and takes its view mask and prior edge bits. Costs are
-// left at the maximum: the next pass rescores.
-PixelState UpsampleState(const PixelState& coarse, const core::Camera& coarse_cam,
-                         const core::Camera& fine_cam);
+// image (camera `fine_cam`) by nearest neighbour: each fine pixel continues the
+// plane of the coarse pixel it falls in, and takes its view mask and prior
+// edge bits. Costs are left at the maximum: the next pass rescores. The
+// coarse index is fine index x size ratio: with an odd fine size that puts
+// even fine columns (rows) one coarse pixel left of (above) where the cameras
+// map them; kept, as --MspStereo.joint_bilateral_upsampling false promises
+// the earlier results.
+PixelState UpsampleStateNearest(const PixelState& coarse, const core::Camera& coarse_cam,
+                                const core::Camera& fine_cam);
+
+// As UpsampleStateNearest, but each fine pixel continues the plane, and takes
+// the view mask, of the coarse pixel among the 3x3 around it that a joint
+// bilateral vote picks (src/core/patch_match/joint_bilateral.h): weights from
+// the distance and from the grey difference between the fine pixel in
+// `fine_guide` and the coarse pixel in `coarse_guide` (the reference image at
+// the two levels), so depth edges move to the image edges inside a coarse
+// pixel. Prior edge bits stay nearest neighbour's: they mark image locations,
+// and their 2-px lines stay whole where the two fine pixels of a coarse edge
+// pixel take planes from different neighbours.
+PixelState UpsampleStateJointBilateral(const PixelState& coarse, const DenseMap& coarse_guide,
+                                       const core::Camera& coarse_cam, const DenseMap& fine_guide,
+                                       const core::Camera& fine_cam);
 
 }  // namespace msp

@@ -335,11 +335,21 @@ class CpuRunner {
       case PassStart::kRandom:
         return PixelState(cam.width, cam.height);
       case PassStart::kUpsampled:
-        return UpsampleState(cache_.Take(problem.ref), coarser_->cameras.at(problem.ref), cam);
+        return Upsample(problem.ref, cam);
       case PassStart::kPrevious:
         break;
     }
     return cache_.Take(problem.ref);
+  }
+
+  // The coarser round's state of view `ref` carried to this round's camera `cam`.
+  PixelState Upsample(int ref, const core::Camera& cam) {
+    const core::Camera& coarse_cam = coarser_->cameras.at(ref);
+    if (msp_.joint_bilateral_upsampling) {
+      return UpsampleStateJointBilateral(cache_.Take(ref), coarser_->gray.at(ref), coarse_cam,
+                                         level_->gray.at(ref), cam);
+    }
+    return UpsampleStateNearest(cache_.Take(ref), coarse_cam, cam);
   }
 
   void WriteOutputs(const Pass& pass, const core::PassParams& params, const Problem& problem) {

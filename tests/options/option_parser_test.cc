@@ -49,6 +49,7 @@ const std::vector<std::string> kMspFields = {"backend",
                                              "num_threads",
                                              "mask_path",
                                              "coarsest_image_size",
+                                             "joint_bilateral_upsampling",
                                              "window_step",
                                              "bilateral_ncc",
                                              "deformable",
@@ -399,6 +400,7 @@ TEST(OptionParser, PrintListsEveryRegisteredOptionOnceWithItsValue) {
   EXPECT_TRUE(has("--PatchMatchStereo.num_threads -1"));  // accepted, ignored: still listed
   EXPECT_TRUE(has("--MspStereo.backend cpu"));
   EXPECT_TRUE(has("--MspStereo.mask_path ''"));
+  EXPECT_TRUE(has("--MspStereo.joint_bilateral_upsampling true"));
   EXPECT_TRUE(has("--log_level 2"));
 }
 

@@ -1,0 +1,144 @@
+#include "patch_match/segment_planes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "core/math/plane.h"
+#include "core/math/rng.h"
+#include "core/patch_match/segment_plane.h"
+#include "tests/support/plane_scene.h"
+
+namespace msp {
+namespace {
+
+// A tilted world plane n . X + dist = 0 in the reference camera's frame.
+const core::Vec3 kTiltedNormal = core::Normalized(core::Vec3{0.3f, -0.2f, -1.0f});
+
+float TiltedDepth(const core::Camera& cam, int col, int row) {
+  const core::Vec3 point{0.0f, 0.0f, 2.0f};  // the plane passes through (0, 0, 2)
+  return core::HypothesisOnPlane(cam, col, row, kTiltedNormal, point).depth;
+}
+
+struct Fixture {
+  test::PlaneScene scene;
+  std::vector<int32_t> labels;
+  std::vector<uint8_t> reliable;
+};
+
+// One segment over the whole image; the state holds the tilted plane's depth
+// on the pixels `support` marks reliable, a wrong depth (+30 %) on every
+// `outlier_every`-th of them (0: none).
+Fixture MakeFixture(bool (*support)(int col, int row), int outlier_every) {
+  Fixture f;
+  test::MakeScene(2.0f, /*textured=*/true, &f.scene);
+  const core::PassParams& p = f.scene.params;
+  const int n = p.state.width * p.state.height;
+  f.labels.assign(n, 1);
+  f.reliable.assign(n, 0);
+  int k = 0;
+  for (int row = 0; row < p.state.height; ++row) {
+    for (int col = 0; col < p.state.width; ++col) {
+      if (!support(col, row)) continue;
+      const int i = p.state.Index(col, row);
+      f.reliable[i] = 1;
+      const bool outlier = outlier_every > 0 && ++k % outlier_every == 0;
+      p.state.depth[i] = TiltedDepth(p.ref_camera, col, row) * (outlier ? 1.3f : 1.0f);
+    }
+  }
+  return f;
+}
+
+// An L: the image's left column band and bottom row band, as a wall's two
+// creases would be.
+bool LShape(int col, int row) { return col < 3 || row >= 145; }
+// Two adjacent rows: planes through them fit, but they span one direction.
+bool TwoRows(int, int row) { return row == 20 || row == 21; }
+
+TEST(SegmentPlanes, FitsThePlaneOfAnLShapedSupportDespiteOutliers) {
+  const Fixture f = MakeFixture(LShape, 4);  // 25 % outliers
+  const std::vector<SegmentPlane> planes =
+      FitSegmentPlanes(f.scene.params, f.labels, f.reliable, 7u);
+  ASSERT_EQ(planes.size(), 2u);
+  const SegmentPlane& plane = planes[1];
+  ASSERT_TRUE(plane.accepted);
+  EXPECT_GT(plane.num_inliers, 0.7 * plane.num_support);
+  EXPECT_LT(plane.num_inliers, 0.8 * plane.num_support);  // the outliers are out
+  // Far from the support (the top right corner), the plane is the true one.
+  const core::Camera& cam = f.scene.params.ref_camera;
+  const int col = cam.width - 1, row = 0;
+  const core::PlaneHypothesis h =
+      core::HypothesisOnPlane(cam, col, row, plane.normal, plane.point);
+  EXPECT_NEAR(h.depth, TiltedDepth(cam, col, row), 1e-3f * h.depth);
+  EXPECT_GT(std::fabs(core::Dot(h.normal, kTiltedNormal)), std::cos(0.5f * 3.14159265f / 180));
+}
+
+TEST(SegmentPlanes, RejectsSupportAlongOneLine) {
+  // Every plane through the band nearly fits it: no plane for the segment.
+  const Fixture f = MakeFixture(TwoRows, 0);
+  const std::vector<SegmentPlane> planes =
+      FitSegmentPlanes(f.scene.params, f.labels, f.reliable, 7u);
+  EXPECT_GT(planes[1].num_inliers, 0);
+  EXPECT_FALSE(planes[1].accepted);
+}
+
+TEST(SegmentPlanes, RejectsSupportWithoutAMajorityPlane) {
+  const Fixture f = MakeFixture(LShape, 0);
+  // Two of three support pixels get a random depth: no plane holds half.
+  const core::PixelStateView& s = f.scene.params.state;
+  core::Rng rng = core::MakeRng(99u);
+  int k = 0;
+  for (int i = 0; i < s.width * s.height; ++i) {
+    if (f.reliable[i] && ++k % 3 != 0) s.depth[i] = rng.Uniform(1.0f, 4.0f);
+  }
+  const std::vector<SegmentPlane> planes =
+      FitSegmentPlanes(f.scene.params, f.labels, f.reliable, 7u);
+  EXPECT_GT(planes[1].num_inliers, 0.3 * planes[1].num_support);
+  EXPECT_FALSE(planes[1].accepted);
+}
+
+TEST(SegmentPlanes, NoSupportNoPlane) {
+  const Fixture f = MakeFixture([](int, int) { return false; }, 0);
+  const std::vector<SegmentPlane> planes =
+      FitSegmentPlanes(f.scene.params, f.labels, f.reliable, 7u);
+  EXPECT_EQ(planes[1].num_support, 0);
+  EXPECT_FALSE(planes[1].accepted);
+}
+
+// OfferSegmentPlane on a textureless plane: any plane costs the same (kMaxCost),
+// so with a margin the pixel takes the segment's plane; without, it keeps its own.
+TEST(SegmentPlanes, TexturelessPixelTakesTheSegmentPlaneWithAMargin) {
+  test::PlaneScene scene;
+  test::MakeScene(2.0f, /*textured=*/false, &scene);
+  const core::PassParams& p = scene.params;
+  const int col = 100, row = 75, i = p.state.Index(col, row);
+  const core::PlaneHypothesis wrong{2.6f, core::Vec3{0.0f, 0.0f, -1.0f}};
+  const core::PlaneHypothesis offered{2.0f, core::Vec3{0.0f, 0.0f, -1.0f}};
+  p.state.Set(i, wrong);
+  core::OfferSegmentPlane(p, col, row, offered, 0.0f);
+  EXPECT_FLOAT_EQ(p.state.depth[i], 2.6f);
+  core::OfferSegmentPlane(p, col, row, offered, 0.1f);
+  EXPECT_FLOAT_EQ(p.state.depth[i], 2.0f);
+}
+
+// On texture the views decide: the true plane is kept against a wrong
+// offer, and a wrong plane gives way to the true one.
+TEST(SegmentPlanes, TexturedPixelTakesOnlyABetterPlane) {
+  test::PlaneScene scene;
+  test::MakeScene(2.0f, /*textured=*/true, &scene);
+  const core::PassParams& p = scene.params;
+  const int col = 100, row = 75, i = p.state.Index(col, row);
+  const core::PlaneHypothesis truth{2.0f, core::Vec3{0.0f, 0.0f, -1.0f}};
+  const core::PlaneHypothesis wrong{2.3f, core::Normalized(core::Vec3{0.4f, 0.0f, -1.0f})};
+  core::OfferSegmentPlane(p, col, row, wrong, 0.0f);
+  EXPECT_FLOAT_EQ(p.state.depth[i], 2.0f);
+  p.state.Set(i, wrong);
+  core::OfferSegmentPlane(p, col, row, truth, 0.0f);
+  EXPECT_FLOAT_EQ(p.state.depth[i], 2.0f);
+  EXPECT_LT(p.state.cost[i], 0.2f);
+}
+
+}  // namespace
+}  // namespace msp

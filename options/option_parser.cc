@@ -186,6 +186,12 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
   MSP_ADD_OPTION(t, *m, coarsest_image_size,
                  "Coarse-to-fine rounds halve the images until the larger side is at most this "
                  "many pixels; one round when the images are already that small.");
+  MSP_ADD_OPTION(t, *m, finest_iterations,
+                 "Red-black iterations per pass in the finest round when there are several "
+                 "rounds (1..3): that round restores detail on the coarser rounds' planes.");
+  MSP_ADD_OPTION(t, *m, finest_deformable,
+                 "With several rounds, the finest round also runs the deformable step; false = "
+                 "conventional sweeps there (the coarser rounds found the textureless planes).");
   MSP_ADD_OPTION(t, *m, joint_bilateral_upsampling,
                  "Carry each pixel's plane up to the next round from the coarse pixel among the "
                  "3x3 around it that a joint-bilateral vote guided by the image picks (ACMM), so "
@@ -201,9 +207,13 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
                  "Deformable patch matching (APD-MVS): unreliable pixels match over reliable "
                  "anchors; false = the conventional PatchMatch core alone.");
   MSP_ADD_OPTION(t, *m, segment_planes,
-                 "After each pass but the last, fit a plane to the reliable pixels of each colour "
+                 "After each pass, fit a plane to the matched edge pixels on and around each colour "
                  "segment (RANSAC) and offer it to the segment's pixels: textureless pixels take "
                  "it unless the views reject it, textured ones only when it matches better.");
+  MSP_ADD_OPTION(t, *m, filter_textureless_by_geometry,
+                 "With geometric consistency, the final filter counts a weakly textured pixel's "
+                 "sources by triangulation angle and reprojection alone: its NCC is noise. false "
+                 "= the NCC test for every pixel, as COLMAP.");
   MSP_ADD_OPTION(t, *m, reliable_max_cost,
                  "[0, 2]. A pixel whose lowest disparity-curve minimum costs more is unreliable.");
   MSP_ADD_OPTION(t, *m, reliable_single_cost,

@@ -93,7 +93,11 @@ struct MspStereoOptions {
   // Folder of per-image segmentation mask layers; "" = <workspace>/masks.
   std::string mask_path = "";
   // Coarse-to-fine rounds halve the images until the larger side is at most this (pixels).
-  int coarsest_image_size = 1000;
+  int coarsest_image_size = 80;
+  // Red-black iterations per pass in the finest round of a run with several rounds (coarser: 3).
+  int finest_iterations = 1;
+  // The finest round of a run with several rounds runs the deformable step; false = conventional.
+  bool finest_deformable = false;
   // Carry planes up a round by an image-guided joint-bilateral vote (ACMM); false = nearest.
   bool joint_bilateral_upsampling = true;
   // Pixel step between window samples, 1 or 2 (paper: 2); replaces --PatchMatchStereo.window_step.
@@ -102,9 +106,11 @@ struct MspStereoOptions {
   bool bilateral_ncc = false;
   // Deformable patches of APD-MVS: unreliable pixels match over reliable anchors; false = plain PM.
   bool deformable = true;
-  // After each pass but the last, colour segments' reliable pixels give each segment a plane that
-  // its textureless pixels take (docs/method.md section 5.1); false = no segment planes.
+  // After each pass, matched edge pixels give each colour segment a plane that its textureless
+  // pixels take (docs/method.md section 2.10); false = no segment planes.
   bool segment_planes = true;
+  // The final filter judges a weakly textured pixel by geometric agreement alone (no NCC test).
+  bool filter_textureless_by_geometry = true;
   // Cost (1 - NCC, in [0, 2]) above which the lowest cost-curve minimum is unreliable (APD: 0.5).
   double reliable_max_cost = 0.5;
   // Cost (1 - NCC) at or below which a single curve minimum is reliable (APD: 0.15).

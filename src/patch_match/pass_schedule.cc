@@ -1,6 +1,5 @@
 #include "patch_match/pass_schedule.h"
 
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -24,10 +23,13 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
   pass.start =
       first ? PassStart::kRandom : (index == 0 ? PassStart::kUpsampled : PassStart::kPrevious);
   // The first pass has no planes to classify: it runs the conventional sweeps.
-  const bool last_round_ = round == num_rounds - 1;
-  const bool round_deformable = msp.deformable && !(round > 0 && last_round_ && getenv("MSP_FINEST_CONV"));
+  // The finest round of a pyramid restores detail on planes the coarser
+  // rounds found, where pixels are dearest: fewer iterations, and the
+  // conventional sweeps unless finest_deformable.
+  const bool restoring = round > 0 && round == num_rounds - 1;
+  const bool round_deformable = msp.deformable && !(restoring && !msp.finest_deformable);
   const bool deformable = round_deformable && !first;
-  if (round > 0 && last_round_ && getenv("MSP_FINEST_ITERS")) pass.iterations = atoi(getenv("MSP_FINEST_ITERS"));
+  if (restoring) pass.iterations = msp.finest_iterations;
   pass.sweeps = deformable ? PassSweeps::kDeformable : PassSweeps::kCheckerboard;
   // A round's first pass classifies with the thresholds after the coarser
   // round's last pass; the others take the classes of the previous refine.
@@ -38,9 +40,9 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
   // The prior's edges confine the passes after the one that made them, so
   // none are made in the final pass.
   pass.prior = SegmentationPriorEnabled(msp) && deformable && !final_pass;
-  // Planes a segment imposes are checked by the passes after it, so the
-  // final pass offers none.
-  pass.segment_planes = msp.segment_planes && !final_pass;
+  // Also in the final pass: its textureless pixels' normals are noise
+  // after the sweeps, and the filter checks the planes against the views.
+  pass.segment_planes = msp.segment_planes;
   if (final_pass) {
     pass.output = PassOutput::kFinal;
   } else if (last_round && pm.geom_consistency && index == 0) {

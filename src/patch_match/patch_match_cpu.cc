@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <memory>
 #include <set>
@@ -367,7 +366,7 @@ class CpuRunner {
         static_cast<float>(pm_.filter_min_triangulation_angle) * kDegreesToRadians;
     filter.min_num_consistent = std::min(pm_.filter_min_num_consistent, params.num_src);
     filter.geom_max_error = static_cast<float>(pm_.filter_geom_consistency_max_cost);
-    filter.textureless_by_geometry = getenv("MSP_TBG") ? 1 : 0;
+    filter.textureless_by_geometry = msp_.filter_textureless_by_geometry ? 1 : 0;
     ExtractMaps(params, pm_.filter ? &filter : nullptr, threads_, &depth, &normal);
     // Pictures before maps: a run stopped between them redoes the view, so
     // every view with final maps has its pictures.

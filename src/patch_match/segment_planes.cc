@@ -17,7 +17,7 @@ namespace {
 // The segments: the finest granularity of the embedded segmenter's three
 // (multiscale_segmentation.h), where a wall, the floor and each face of a
 // box are segments of their own. (Coarser ones merge surfaces and measured
-// worse: docs/method.md section 5.1.)
+// worse: docs/method.md section 2.10.)
 constexpr int kSegmentLevel = 2;
 constexpr int kNumSegmentLevels = 3;
 // A pixel supports its segment's plane when it sits on an edge of the image

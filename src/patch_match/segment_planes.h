@@ -1,6 +1,6 @@
-// Segment planes (docs/method.md section 5.1): after a pass, the reference
-// image is cut into colour segments; each segment's reliable pixels (enough
-// texture, low cost) give its plane by RANSAC in 3D, and every pixel of the
+// Segment planes (docs/method.md section 2.10): after a pass, the reference
+// image is cut into colour segments; the matched edge pixels on and around
+// each segment give its plane by RANSAC in 3D, and every pixel of the
 // segment is offered that plane (core/patch_match/segment_plane.h). Textured
 // pixels keep their plane unless the segment's matches better; textureless
 // ones take it unless the views clearly reject it, so a blank wall gets the
@@ -19,7 +19,7 @@ namespace msp {
 struct SegmentPlane {
   core::Vec3 normal;  // unit, camera frame
   core::Vec3 point;   // a point of the plane, camera frame
-  int num_support = 0;  // reliable pixels of the segment
+  int num_support = 0;  // reliable pixels on or next to the segment
   int num_inliers = 0;
   bool accepted = false;  // enough inliers, spanning two image directions
 };
@@ -32,7 +32,7 @@ struct SegmentPlanesReport {
 };
 
 // Fits the plane of every segment of `labels` (ids 1..K, 0 = none) from the
-// pixels of `reliable` (1 = reliable), RANSAC seeded by `key`; segments
+// pixels of `reliable` (1 = reliable) on it or 4-adjacent to it, RANSAC seeded by `key`; segments
 // without a well-supported plane that spans two image directions are not
 // accepted. Index = segment id.
 std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,

@@ -1,4 +1,4 @@
-// Segment planes, per pixel (docs/method.md section 5.1). A pixel of a
+// Segment planes, per pixel (docs/method.md section 2.10). A pixel of a
 // textureless wall has no photometric signal to choose its plane, but its
 // colour segment usually holds pixels that do (its borders, any texture on
 // it), and their 3D points fix the plane of the whole segment. The host fits

@@ -10,9 +10,16 @@
 namespace msp {
 namespace {
 
-// The bundled scene at --PatchMatchStereo.max_image_size 320: one round.
+// The bundled scene at --PatchMatchStereo.max_image_size 320.
 constexpr int kSceneWidth = 320;
 constexpr int kSceneHeight = 240;
+
+// Options whose pyramid has one round at the scene's size.
+MspStereoOptions OneRound() {
+  MspStereoOptions msp;
+  msp.coarsest_image_size = 1000;
+  return msp;
+}
 
 // The schedule's printout, also on stdout for the test log.
 std::string Printed(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp,
@@ -22,77 +29,83 @@ std::string Printed(const PatchMatchStereoOptions& pm, const MspStereoOptions& m
   return printed;
 }
 
-TEST(PassSchedule, DefaultOptions) {
-  EXPECT_EQ(Printed(PatchMatchStereoOptions(), MspStereoOptions()),
+TEST(PassSchedule, OneRound) {
+  EXPECT_EQ(Printed(PatchMatchStereoOptions(), OneRound()),
             "round 1/1 (scale 1/1), pass 1 photometric (id 0): random start; 3 x checkerboard; "
-            "refine + classify; writes unfiltered maps\n"
+            "refine + classify; segment planes; writes unfiltered maps\n"
             "round 1/1 (scale 1/1), pass 2 geometric (id 1): previous state; 3 x deformable "
-            "(classes from the refine); refine + classify; prior\n"
+            "(classes from the refine); refine + classify; segment planes; prior\n"
             "round 1/1 (scale 1/1), pass 3 geometric (id 2): previous state; 3 x deformable "
-            "(classes from the refine); refine + classify; prior\n"
+            "(classes from the refine); refine + classify; segment planes; prior\n"
             "round 1/1 (scale 1/1), pass 4 geometric (id 3): previous state; 3 x deformable "
-            "(classes from the refine); refine; writes final maps\n");
+            "(classes from the refine); refine; segment planes; writes final maps\n");
+}
+
+// Default options at 320 x 240: 320 -> 160 -> 80; the finest round restores
+// detail with one conventional iteration per pass.
+TEST(PassSchedule, DefaultOptionsRestoreDetailInTheFinestRound) {
+  const std::string round1 =
+      "round 1/3 (scale 1/4), pass 1 photometric (id 0): random start; 3 x checkerboard; "
+      "refine + classify; segment planes\n"
+      "round 1/3 (scale 1/4), pass 2 geometric (id 1): previous state; 3 x deformable "
+      "(classes from the refine); refine + classify; segment planes; prior\n"
+      "round 1/3 (scale 1/4), pass 3 geometric (id 2): previous state; 3 x deformable "
+      "(classes from the refine); refine + classify; segment planes; prior\n"
+      "round 1/3 (scale 1/4), pass 4 geometric (id 3): previous state; 3 x deformable "
+      "(classes from the refine); refine; segment planes; prior\n";
+  const std::string round2 =
+      "round 2/3 (scale 1/2), pass 1 photometric (id 8): upsampled state; 3 x deformable "
+      "(classified after pass 4); refine + classify; segment planes; prior\n"
+      "round 2/3 (scale 1/2), pass 2 geometric (id 9): previous state; 3 x deformable "
+      "(classes from the refine); refine + classify; segment planes; prior\n"
+      "round 2/3 (scale 1/2), pass 3 geometric (id 10): previous state; 3 x deformable "
+      "(classes from the refine); refine + classify; segment planes; prior\n"
+      "round 2/3 (scale 1/2), pass 4 geometric (id 11): previous state; 3 x deformable "
+      "(classes from the refine); refine; segment planes; prior\n";
+  const std::string round3 =
+      "round 3/3 (scale 1/1), pass 1 photometric (id 16): upsampled state; 1 x checkerboard; "
+      "refine; segment planes; writes unfiltered maps\n"
+      "round 3/3 (scale 1/1), pass 2 geometric (id 17): previous state; 1 x checkerboard; "
+      "refine; segment planes\n"
+      "round 3/3 (scale 1/1), pass 3 geometric (id 18): previous state; 1 x checkerboard; "
+      "refine; segment planes\n"
+      "round 3/3 (scale 1/1), pass 4 geometric (id 19): previous state; 1 x checkerboard; "
+      "refine; segment planes; writes final maps\n";
+  EXPECT_EQ(Printed(PatchMatchStereoOptions(), MspStereoOptions()), round1 + round2 + round3);
 }
 
 TEST(PassSchedule, WithoutGeometricConsistencyOnePassWritesTheFinalMaps) {
   PatchMatchStereoOptions pm;
   pm.geom_consistency = false;
-  EXPECT_EQ(Printed(pm, MspStereoOptions()),
+  EXPECT_EQ(Printed(pm, OneRound()),
             "round 1/1 (scale 1/1), pass 1 photometric (id 0): random start; 3 x checkerboard; "
-            "refine; writes final maps\n");
+            "refine; segment planes; writes final maps\n");
 }
 
 TEST(PassSchedule, WithoutDeformablePatchesNeitherClassesNorPrior) {
-  MspStereoOptions msp;
+  MspStereoOptions msp = OneRound();
   msp.deformable = false;
   // The prior preview needs the prior, which needs deformable patches; the
   // pictures of the final maps need neither.
   msp.write_previews = true;
   EXPECT_EQ(Printed(PatchMatchStereoOptions(), msp),
             "round 1/1 (scale 1/1), pass 1 photometric (id 0): random start; 3 x checkerboard; "
-            "refine; writes unfiltered maps\n"
+            "refine; segment planes; writes unfiltered maps\n"
             "round 1/1 (scale 1/1), pass 2 geometric (id 1): previous state; 3 x checkerboard; "
-            "refine\n"
+            "refine; segment planes\n"
             "round 1/1 (scale 1/1), pass 3 geometric (id 2): previous state; 3 x checkerboard; "
-            "refine\n"
+            "refine; segment planes\n"
             "round 1/1 (scale 1/1), pass 4 geometric (id 3): previous state; 3 x checkerboard; "
-            "refine; writes final maps; map previews\n");
-}
-
-TEST(PassSchedule, SeveralRoundsOnlyTheLastWrites) {
-  // 3000 -> 1500 -> 750: two halvings until the larger side is <= 1000.
-  EXPECT_EQ(Printed(PatchMatchStereoOptions(), MspStereoOptions(), 3000, 2000),
-            std::string("round 1/3 (scale 1/4), pass 1 photometric (id 0): random start; 3 x "
-                        "checkerboard; refine + classify\n") +
-                "round 1/3 (scale 1/4), pass 2 geometric (id 1): previous state; 3 x deformable "
-                "(classes from the refine); refine + classify; prior\n"
-                "round 1/3 (scale 1/4), pass 3 geometric (id 2): previous state; 3 x deformable "
-                "(classes from the refine); refine + classify; prior\n"
-                "round 1/3 (scale 1/4), pass 4 geometric (id 3): previous state; 3 x deformable "
-                "(classes from the refine); refine; prior\n"
-                "round 2/3 (scale 1/2), pass 1 photometric (id 8): upsampled state; 3 x "
-                "deformable (classified after pass 4); refine + classify; prior\n"
-                "round 2/3 (scale 1/2), pass 2 geometric (id 9): previous state; 3 x deformable "
-                "(classes from the refine); refine + classify; prior\n"
-                "round 2/3 (scale 1/2), pass 3 geometric (id 10): previous state; 3 x deformable "
-                "(classes from the refine); refine + classify; prior\n"
-                "round 2/3 (scale 1/2), pass 4 geometric (id 11): previous state; 3 x deformable "
-                "(classes from the refine); refine; prior\n"
-                "round 3/3 (scale 1/1), pass 1 photometric (id 16): upsampled state; 3 x "
-                "deformable (classified after pass 4); refine + classify; prior; writes "
-                "unfiltered maps\n"
-                "round 3/3 (scale 1/1), pass 2 geometric (id 17): previous state; 3 x deformable "
-                "(classes from the refine); refine + classify; prior\n"
-                "round 3/3 (scale 1/1), pass 3 geometric (id 18): previous state; 3 x deformable "
-                "(classes from the refine); refine + classify; prior\n"
-                "round 3/3 (scale 1/1), pass 4 geometric (id 19): previous state; 3 x deformable "
-                "(classes from the refine); refine; writes final maps\n");
+            "refine; segment planes; writes final maps; map previews\n");
 }
 
 TEST(PassSchedule, SeveralRoundsWithoutGeometricConsistencyClassifyAtEachRoundStart) {
   PatchMatchStereoOptions pm;
   pm.geom_consistency = false;
-  MspStereoOptions msp;
+  MspStereoOptions msp = OneRound();  // 1500 -> 750: two rounds
+  msp.finest_deformable = true;
+  msp.finest_iterations = 3;
+  msp.segment_planes = false;
   msp.write_previews = true;
   // The prior preview shows the prior's edges: without the prior there is none.
   for (bool prior : {true, false}) {
@@ -109,13 +122,15 @@ TEST(PassSchedule, SeveralRoundsWithoutGeometricConsistencyClassifyAtEachRoundSt
 // Invariants the runner relies on, over the option combinations.
 TEST(PassSchedule, ClassesAndIdsAreConsistent) {
   for (const bool geom : {false, true}) {
-    for (const bool deformable : {false, true}) {
+    for (const int variant : {0, 1, 2}) {
       PatchMatchStereoOptions pm;
       pm.geom_consistency = geom;
       MspStereoOptions msp;
-      msp.deformable = deformable;
+      msp.deformable = variant != 0;
+      msp.finest_deformable = variant == 2;
+      // 4000 -> 2000 -> ... -> 62: seven rounds.
       const std::vector<Pass> schedule = BuildPassSchedule(pm, msp, 4000, 3000);
-      ASSERT_EQ(schedule.size(), 3u * (geom ? 4 : 1));
+      ASSERT_EQ(schedule.size(), 7u * (geom ? 4 : 1));
       std::set<uint32_t> ids;
       int num_final = 0;
       for (size_t i = 0; i < schedule.size(); ++i) {

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Textureless surfaces, each step off in turn: runs msp_stereo on a fresh copy
+# of a workspace with ground truth (the bundled scene) once per row below,
+# one after the other, fuses with COLMAP and evaluates, and prints one table
+# row per run: time, fused accuracy and F1 (>= 3 views) at 0.5 % and 2 % of
+# the extent, and the textureless pixels' valid share, share within 1 % and
+# median normal error.
+#
+#   bench/textureless_ablation.sh <workspace> [msp_stereo options for every run...]
+#
+# e.g. bench/textureless_ablation.sh WS --PatchMatchStereo.max_image_size 320
+# Binaries from $MSP_BIN (default build/bin); colmap from $COLMAP (/usr/bin/colmap).
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+workspace=$(cd "$1" && pwd); shift
+common=("$@")
+bin="${MSP_BIN:-$root/build/bin}"
+colmap="${COLMAP:-/usr/bin/colmap}"
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+
+rows=(
+  "default|"
+  "segment planes off|--MspStereo.segment_planes false"
+  "textureless filter by NCC (as COLMAP)|--MspStereo.filter_textureless_by_geometry false"
+  "nearest-neighbour upsampling|--MspStereo.joint_bilateral_upsampling false"
+  "finest round deformable, 3 iterations|--MspStereo.finest_deformable true --MspStereo.finest_iterations 3"
+  "one round (no pyramid)|--MspStereo.coarsest_image_size 100000"
+)
+
+printf '| run | wall s | user CPU-s | fused acc 0.5 / 2 %% | fused F1 0.5 / 2 %% | textureless valid / within 1 %% / normal |\n'
+printf '|---|---|---|---|---|---|\n'
+for row in "${rows[@]}"; do
+  name=${row%%|*}
+  read -r -a options <<< "${row#*|}"
+  ws="$scratch/ws"
+  rm -rf "$ws"
+  cp -r "$workspace" "$ws"
+  rm -rf "$ws/stereo/depth_maps" "$ws/stereo/normal_maps" "$ws/stereo/msp" "$ws/fused.ply"
+  mkdir -p "$ws/stereo/depth_maps" "$ws/stereo/normal_maps"
+  /usr/bin/time -f "%e %U" -o "$scratch/time" "$bin/msp_stereo" --workspace_path "$ws" \
+    "${common[@]}" "${options[@]}" > "$scratch/stereo.log" 2>&1
+  "$colmap" stereo_fusion --workspace_path "$ws" --input_type geometric \
+    --output_path "$ws/fused.ply" > "$scratch/fusion.log" 2>&1
+  "$bin/msp_evaluate" --workspace "$ws" --fused "$ws/fused.ply" --json "$scratch/eval.json" \
+    > /dev/null
+  read -r wall user < "$scratch/time"
+  /usr/bin/python3 - "$scratch/eval.json" "$name" "$wall" "$user" <<'PY'
+import json, sys
+e = json.load(open(sys.argv[1]))
+name, wall, user = sys.argv[2], float(sys.argv[3]), float(sys.argv[4])
+f = e["fused"]
+t = e["average"]["textureless"]
+acc = " / ".join("%.1f" % (100 * x["accuracy"]) for x in f["thresholds"])
+f1 = " / ".join("%.1f" % (100 * x["f1_multi"]) for x in f["thresholds"])
+print("| %s | %.0f | %.0f | %s | %s | %.1f / %.1f %% / %.1f deg |" % (
+    name, wall, user, acc, f1, 100 * t["valid_fraction"], 100 * t["complete_1"],
+    t["median_normal_error_deg"]))
+PY
+done

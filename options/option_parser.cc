@@ -206,10 +206,11 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
   MSP_ADD_OPTION(t, *m, deformable,
                  "Deformable patch matching (APD-MVS): unreliable pixels match over reliable "
                  "anchors; false = the conventional PatchMatch core alone.");
-  MSP_ADD_OPTION(t, *m, segment_planes,
-                 "After each pass, fit a plane to the matched edge pixels on and around each colour "
-                 "segment (RANSAC) and offer it to the segment's pixels: textureless pixels take "
-                 "it unless the views reject it, textured ones only when it matches better.");
+  MSP_ADD_OPTION(
+      t, *m, segment_planes,
+      "After each pass, fit a plane to the matched edge pixels on and around each colour "
+      "segment (RANSAC) and offer it to the segment's pixels: textureless pixels take "
+      "it unless the views reject it, textured ones only when it matches better.");
   MSP_ADD_OPTION(t, *m, filter_textureless_by_geometry,
                  "With geometric consistency, the final filter counts a weakly textured pixel's "
                  "sources by triangulation angle and reprojection alone: its NCC is noise. false "

@@ -145,8 +145,9 @@ class CpuRunner {
         const View& view = views_[problems_[k].ref];
         if (view.color.channels != 3 || view.color.width != view.gray.width ||
             view.color.height != view.gray.height) {
-          throw std::invalid_argument("view " + view.name +
-                                      ": the segmentation prior and segment planes need its RGB image");
+          throw std::invalid_argument(
+              "view " + view.name +
+              ": the segmentation prior and segment planes need its RGB image");
         }
         DenseMap color = view.color;
         for (int h = 0; h < halvings; ++h) color = DownsampleHalf(color);
@@ -281,14 +282,17 @@ class CpuRunner {
         report.classify_seconds, report.sweeps.anchor_seconds, report.sweeps.sweep_seconds);
   }
 
+  // Segment planes of one image after a pass (docs/method.md section 2.10),
+  // then how many segments had a plane and how many pixels took theirs.
   void RunSegmentPlanes(const core::PassParams& params, const Problem& problem) {
     const auto t0 = std::chrono::steady_clock::now();
     const SegmentPlanesReport r =
         ApplySegmentPlanes(params, level_->color.at(problem.ref), threads_);
-    std::printf("  segment planes: %d of %d segments, %.1f%% of pixels offered, %.1f%% took; %.2f s\n",
-                r.num_planes, r.num_segments,
-                100.0 * r.num_offered / (params.state.width * params.state.height),
-                100.0 * r.num_taken / (params.state.width * params.state.height), SecondsSince(t0));
+    std::printf(
+        "  segment planes: %d of %d segments, %.1f%% of pixels offered, %.1f%% took; %.2f s\n",
+        r.num_planes, r.num_segments,
+        100.0 * r.num_offered / (params.state.width * params.state.height),
+        100.0 * r.num_taken / (params.state.width * params.state.height), SecondsSince(t0));
   }
 
   // The prior of one image after a deformable pass (docs/method.md section 4): its

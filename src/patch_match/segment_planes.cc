@@ -50,7 +50,6 @@ struct SupportPoint {
   core::Vec3 X;  // camera frame
 };
 
-
 struct PixelPosition {
   int col, row;
 };
@@ -111,8 +110,8 @@ void RefitPlane(const std::vector<const SupportPoint*>& inliers, SegmentPlane* p
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
   const Eigen::Vector3d n = solver.eigenvectors().col(0);  // smallest eigenvalue first
-  plane->normal = core::Vec3{static_cast<float>(n.x()), static_cast<float>(n.y()),
-                             static_cast<float>(n.z())};
+  plane->normal =
+      core::Vec3{static_cast<float>(n.x()), static_cast<float>(n.y()), static_cast<float>(n.z())};
   plane->point = core::Vec3{static_cast<float>(mean.x()), static_cast<float>(mean.y()),
                             static_cast<float>(mean.z())};
 }
@@ -160,8 +159,7 @@ SegmentPlane FitOnePlane(const core::PassParams& p, float focal_baseline,
   best.num_inliers = static_cast<int>(positions.size());
   const bool supported =
       best.num_inliers >= kMinInliers && best.num_inliers >= kMinInlierShare * support.size();
-  const bool spans =
-      SecondSpread(positions) >= kMinSpreadShare * kMinSpreadShare * segment_spread;
+  const bool spans = SecondSpread(positions) >= kMinSpreadShare * kMinSpreadShare * segment_spread;
   best.accepted = supported && spans;
   return best;
 }
@@ -212,8 +210,8 @@ SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params, const Den
                                        int num_threads) {
   const core::PixelStateView& s = params.state;
   const int n = s.width * s.height;
-  const std::vector<int32_t> labels =
-      SegmentGraph(color, SegmentationScale(kSegmentLevel, kNumSegmentLevels, color.width, color.height));
+  const std::vector<int32_t> labels = SegmentGraph(
+      color, SegmentationScale(kSegmentLevel, kNumSegmentLevels, color.width, color.height));
   std::vector<float> texture(n);
   ParallelFor(0, s.height, num_threads, [&](int row) {
     for (int col = 0; col < s.width; ++col) {

@@ -17,8 +17,8 @@
 namespace msp {
 
 struct SegmentPlane {
-  core::Vec3 normal;  // unit, camera frame
-  core::Vec3 point;   // a point of the plane, camera frame
+  core::Vec3 normal;    // unit, camera frame
+  core::Vec3 point;     // a point of the plane, camera frame
   int num_support = 0;  // reliable pixels on or next to the segment
   int num_inliers = 0;
   bool accepted = false;  // enough inliers, spanning two image directions
@@ -26,9 +26,9 @@ struct SegmentPlane {
 
 struct SegmentPlanesReport {
   int num_segments = 0;
-  int num_planes = 0;       // segments whose plane passed the checks
-  int num_offered = 0;      // pixels in those segments
-  int num_taken = 0;        // pixels that took the segment's plane
+  int num_planes = 0;   // segments whose plane passed the checks
+  int num_offered = 0;  // pixels in those segments
+  int num_taken = 0;    // pixels that took the segment's plane
 };
 
 // Fits the plane of every segment of `labels` (ids 1..K, 0 = none) from the

@@ -18,7 +18,7 @@ struct FilterParams {
   float geom_max_error;           // filter_geom_consistency_max_cost, pixels
   // 1: in geometric passes a weakly textured pixel (window_texture.h), whose
   // NCC is noise, counts the views that agree geometrically, without the NCC test.
-  int textureless_by_geometry;
+  int textureless_by_geometry = 0;
 };
 
 // Angle at X between the rays from the two camera centres.

@@ -29,7 +29,7 @@ MSP_HD PlaneHypothesis HypothesisOnPlane(const Camera& cam, int col, int row, Ve
 }
 
 // Pixel (col, row) takes `candidate` (its segment's plane) when the
-// candidate's cost over the pixel's selected views is at most its own plane's
+// candidate's cost over the pixel's selected views is below its own plane's
 // plus `margin`. Costs are computed alike for both (LocalRefinePixel's form),
 // so a pixel with texture (margin 0) keeps its plane unless the candidate
 // matches better; a textureless one, whose costs are noise, takes the
@@ -44,11 +44,10 @@ MSP_HD void OfferSegmentPlane(const PassParams& p, int col, int row,
   RefWindow w;
   PrepareWindow(p, col, row, &w);
   const PlaneHypothesis cur = s.Get(i);
-  const float own = cur.depth > 0.0f ? AggregateViewCostBelow(p, w, cur, weights, kUnboundedCost)
-                                     : kMaxCost;
+  const float own =
+      cur.depth > 0.0f ? AggregateViewCostBelow(p, w, cur, weights, kUnboundedCost) : kMaxCost;
   const float cost = AggregateViewCostBelow(p, w, candidate, weights, own + margin);
-  if (cost >= own + margin && margin > 0.0f) return;
-  if (margin <= 0.0f && cost >= own) return;
+  if (cost >= own + margin) return;
   s.Set(i, candidate);
   s.cost[i] = cost;
 }

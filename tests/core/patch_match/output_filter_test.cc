@@ -23,6 +23,7 @@ FilterParams DefaultFilter() {
   f.min_triangulation_angle = 3.0f * kDegrees;
   f.min_num_consistent = 2;
   f.geom_max_error = 1.0f;
+  f.textureless_by_geometry = 0;
   return f;
 }
 
@@ -157,6 +158,38 @@ TEST(OutputFilter, GeometricPassDropsAViewWhoseDepthDisagrees) {
   p.src[1].depth = ImageView{truth1.data(), cam1.width, cam1.height, cam1.width};
   p.geometric = 1;
   EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 3);
+}
+
+// With textureless_by_geometry, a textureless pixel in a geometric pass is
+// judged by the sources' depths: the wide views count when their depth maps
+// agree with the pixel's depth, none when they hold another depth.
+TEST(OutputFilter, TexturelessPixelCountsTheViewsThatAgreeGeometrically) {
+  test::PlaneScene s;
+  test::MakeScene(kDepth, /*textured=*/false, &s);
+  test::AddSourceView(test::MirroredSourceCamera(), &s);
+  PassParams& p = s.params;
+  p.geometric = 1;
+  std::vector<std::vector<float>> depths;
+  const auto set_source_depths = [&](float depth) {
+    depths.clear();
+    for (int j = 0; j < p.num_src; ++j) {
+      depths.push_back(test::PlaneDepthMap(p.src[j].camera, depth));
+      p.src[j].depth = ImageView{depths.back().data(), p.src[j].camera.width,
+                                 p.src[j].camera.height, p.src[j].camera.width};
+    }
+  };
+  depths.reserve(p.num_src);
+  FilterParams f = DefaultFilter();
+  set_source_depths(kDepth);
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 0);  // NCC test: no texture, no view
+  f.textureless_by_geometry = 1;
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 2);
+  set_source_depths(1.1f * kDepth);
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 0);
+  // In a photometric pass there is no geometry to judge by: the NCC test stays.
+  set_source_depths(kDepth);
+  p.geometric = 0;
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 0);
 }
 
 }  // namespace

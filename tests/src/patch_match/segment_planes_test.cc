@@ -69,8 +69,7 @@ TEST(SegmentPlanes, FitsThePlaneOfAnLShapedSupportDespiteOutliers) {
   // Far from the support (the top right corner), the plane is the true one.
   const core::Camera& cam = f.scene.params.ref_camera;
   const int col = cam.width - 1, row = 0;
-  const core::PlaneHypothesis h =
-      core::HypothesisOnPlane(cam, col, row, plane.normal, plane.point);
+  const core::PlaneHypothesis h = core::HypothesisOnPlane(cam, col, row, plane.normal, plane.point);
   EXPECT_NEAR(h.depth, TiltedDepth(cam, col, row), 1e-3f * h.depth);
   EXPECT_GT(std::fabs(core::Dot(h.normal, kTiltedNormal)), std::cos(0.5f * 3.14159265f / 180));
 }

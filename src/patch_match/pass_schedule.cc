@@ -22,12 +22,13 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
   const bool first = round == 0 && index == 0;
   pass.start =
       first ? PassStart::kRandom : (index == 0 ? PassStart::kUpsampled : PassStart::kPrevious);
+  const bool last_round = round == num_rounds - 1;
   // The first pass has no planes to classify: it runs the conventional sweeps.
   // The finest round of a pyramid restores detail on planes the coarser
   // rounds found, where pixels are dearest: fewer iterations, and the
   // conventional sweeps unless finest_deformable.
-  const bool restoring = round > 0 && round == num_rounds - 1;
-  const bool round_deformable = msp.deformable && !(restoring && !msp.finest_deformable);
+  const bool restoring = round > 0 && last_round;
+  const bool round_deformable = msp.deformable && (!restoring || msp.finest_deformable);
   const bool deformable = round_deformable && !first;
   if (restoring) pass.iterations = msp.finest_iterations;
   pass.sweeps = deformable ? PassSweeps::kDeformable : PassSweeps::kCheckerboard;
@@ -35,7 +36,6 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
   // round's last pass; the others take the classes of the previous refine.
   if (deformable && index == 0) pass.classify_after = num_passes - 1;
   pass.refine_classifies = round_deformable && index + 1 < num_passes;
-  const bool last_round = round == num_rounds - 1;
   const bool final_pass = last_round && index == num_passes - 1;
   // The prior's edges confine the passes after the one that made them, so
   // none are made in the final pass.

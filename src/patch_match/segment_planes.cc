@@ -213,15 +213,11 @@ SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params, const Den
   const std::vector<int32_t> labels = SegmentGraph(
       color, SegmentationScale(kSegmentLevel, kNumSegmentLevels, color.width, color.height));
   std::vector<float> texture(n);
-  ParallelFor(0, s.height, num_threads, [&](int row) {
-    for (int col = 0; col < s.width; ++col) {
-      texture[s.Index(col, row)] = core::WindowTextureStd(params, col, row);
-    }
-  });
   std::vector<uint8_t> reliable(n);
   ParallelFor(0, s.height, num_threads, [&](int row) {
     for (int col = 0; col < s.width; ++col) {
       const int i = s.Index(col, row);
+      texture[i] = core::WindowTextureStd(params, col, row);
       reliable[i] = texture[i] >= core::kTexturedWindowStd && s.depth[i] > 0.0f &&
                     s.cost[i] < kReliableCost &&
                     core::EdgeStrength(params.ref_image, col, row) >= kMinEdgeStrength;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "colmap_ext/ground_truth.h"
 
@@ -50,9 +52,18 @@ double AngleDeg(const float a[3], const float b[3]) {
   return std::acos(std::clamp(c, -1.0, 1.0)) * kRadToDeg;
 }
 
-void AddRegion(RegionMetrics* sum, const RegionMetrics& m) {
-  sum->num_gt += m.num_gt;
-  sum->num_valid += m.num_valid;
+// A region's mean over the images that have a figure for it.
+struct RegionSum {
+  RegionMetrics sum;
+  int count = 0;
+};
+
+void AddRegion(RegionSum* total, const RegionMetrics& m, bool missing) {
+  total->sum.num_gt += m.num_gt;
+  total->sum.num_valid += m.num_valid;
+  if (!missing && m.num_gt == 0) return;
+  ++total->count;
+  RegionMetrics* sum = &total->sum;
   sum->valid_fraction += m.valid_fraction;
   for (int k = 0; k < 2; ++k) {
     sum->complete[k] += m.complete[k];
@@ -62,36 +73,57 @@ void AddRegion(RegionMetrics* sum, const RegionMetrics& m) {
   sum->median_normal_error_deg += m.median_normal_error_deg;
 }
 
-void DivideRegion(RegionMetrics* m, double n) {
-  m->valid_fraction /= n;
+RegionMetrics Mean(const RegionSum& total) {
+  RegionMetrics m = total.sum;
+  if (total.count == 0) return m;
+  const double n = total.count;
+  m.valid_fraction /= n;
   for (int k = 0; k < 2; ++k) {
-    m->complete[k] /= n;
-    m->accurate[k] /= n;
+    m.complete[k] /= n;
+    m.accurate[k] /= n;
   }
-  m->median_rel_error /= n;
-  m->median_normal_error_deg /= n;
+  m.median_rel_error /= n;
+  m.median_normal_error_deg /= n;
+  return m;
+}
+
+bool InMask(const cv::Mat& mask, int row, int col) {
+  return !mask.empty() && mask.at<uint8_t>(row, col) > 0;
+}
+
+// An empty mask, or one of the ground truth's size.
+void CheckMask(const cv::Mat& mask, const DenseMap& gt, const char* what) {
+  if (mask.empty()) return;
+  if (mask.type() != CV_8UC1 || mask.cols != gt.width || mask.rows != gt.height) {
+    throw std::invalid_argument(std::string("EvaluateDepthMap: the ") + what +
+                                " mask is not CV_8UC1 at the ground truth's size");
+  }
 }
 
 }  // namespace
 
 DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
                                  const DenseMap& gt_depth, const DenseMap& gt_normal,
-                                 const cv::Mat& textureless, const double thresholds[2]) {
+                                 const RegionMasks& masks, const double thresholds[2]) {
   DepthMapMetrics out;
   out.width = depth.width;
   out.height = depth.height;
   const bool has_normal =
       normal.channels == 3 && normal.width == depth.width && normal.height == depth.height;
-  const bool has_mask = !textureless.empty() && textureless.cols == gt_depth.width &&
-                        textureless.rows == gt_depth.height;
-  RegionAccumulator all, flat, textured;
+  CheckMask(masks.textureless, gt_depth, "textureless");
+  CheckMask(masks.near_edge, gt_depth, "near-edge");
+  CheckMask(masks.alike_edge, gt_depth, "alike-edge");
+  RegionAccumulator all, flat, textured, near_edge, alike_edge;
   for (int row = 0; row < depth.height; ++row) {
     const int gt_row = NearestGroundTruthIndex(row, depth.height, gt_depth.height);
     for (int col = 0; col < depth.width; ++col) {
       const int gt_col = NearestGroundTruthIndex(col, depth.width, gt_depth.width);
       const float d_gt = gt_depth.At(gt_row, gt_col);
       if (!(d_gt > 0.0f)) continue;
-      const bool in_flat = has_mask && textureless.at<uint8_t>(gt_row, gt_col) > 0;
+      RegionAccumulator* regions[4] = {&all, nullptr, nullptr, nullptr};
+      regions[1] = InMask(masks.textureless, gt_row, gt_col) ? &flat : &textured;
+      if (InMask(masks.near_edge, gt_row, gt_col)) regions[2] = &near_edge;
+      if (InMask(masks.alike_edge, gt_row, gt_col)) regions[3] = &alike_edge;
       const float d = depth.At(row, col);
       const bool valid = std::isfinite(d) && d > 0.0f;
       double rel = 0.0, angle = -1.0;
@@ -105,7 +137,8 @@ DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
           angle = AngleDeg(n, g);
         }
       }
-      for (RegionAccumulator* acc : {&all, in_flat ? &flat : &textured}) {
+      for (RegionAccumulator* acc : regions) {
+        if (acc == nullptr) continue;
         ++acc->num_gt;
         if (!valid) continue;
         ++acc->num_valid;
@@ -118,21 +151,28 @@ DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
   out.all = all.Finish();
   out.textureless = flat.Finish();
   out.textured = textured.Finish();
+  out.near_edge = near_edge.Finish();
+  out.alike_edge = alike_edge.Finish();
   return out;
 }
 
 DepthMapMetrics AverageMetrics(const std::vector<DepthMapMetrics>& maps) {
   DepthMapMetrics avg;
   avg.name = "average";
-  if (maps.empty()) return avg;
+  RegionSum all, flat, textured, near_edge, alike_edge;
   for (const DepthMapMetrics& m : maps) {
-    AddRegion(&avg.all, m.all);
-    AddRegion(&avg.textureless, m.textureless);
-    AddRegion(&avg.textured, m.textured);
+    AddRegion(&all, m.all, m.missing);
+    AddRegion(&flat, m.textureless, m.missing);
+    AddRegion(&textured, m.textured, m.missing);
+    AddRegion(&near_edge, m.near_edge, m.missing);
+    AddRegion(&alike_edge, m.alike_edge, m.missing);
+    if (!m.missing && avg.edge_band_radius == 0) avg.edge_band_radius = m.edge_band_radius;
   }
-  DivideRegion(&avg.all, static_cast<double>(maps.size()));
-  DivideRegion(&avg.textureless, static_cast<double>(maps.size()));
-  DivideRegion(&avg.textured, static_cast<double>(maps.size()));
+  avg.all = Mean(all);
+  avg.textureless = Mean(flat);
+  avg.textured = Mean(textured);
+  avg.near_edge = Mean(near_edge);
+  avg.alike_edge = Mean(alike_edge);
   return avg;
 }
 

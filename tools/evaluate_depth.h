@@ -11,8 +11,8 @@
 namespace msp {
 namespace eval {
 
-// Figures over one set of pixels (the whole image, its textureless part or
-// the rest).
+// Figures over one set of pixels (the whole image, its textureless part, the
+// rest, or the bands around true depth edges).
 // "Complete" counts over all ground-truth pixels (missing predictions count
 // as failures); "accurate" counts over valid predictions only.
 struct RegionMetrics {
@@ -33,20 +33,33 @@ struct DepthMapMetrics {
   RegionMetrics all;
   RegionMetrics textureless;
   RegionMetrics textured;  // the rest of the ground-truth pixels
+  RegionMetrics near_edge;   // near a true depth edge (tools/edge_regions.h)
+  RegionMetrics alike_edge;  // of those, near an edge between alike colours
+  int edge_band_radius = 0;  // of near_edge / alike_edge, in ground-truth pixels
   // The pictures msp_stereo --MspStereo.write_previews left for the image, as
   // (kind, path), only those that exist (ExistingPreviews, map_previews.h).
   std::vector<std::pair<std::string, std::string>> previews;
 };
 
+// The pixel sets evaluated besides the whole image: CV_8UC1 masks at
+// ground-truth size, non-zero inside. An empty mask holds no pixel.
+struct RegionMasks {
+  cv::Mat textureless;  // the rest is `textured`
+  cv::Mat near_edge;
+  cv::Mat alike_edge;
+};
+
 // The prediction may be smaller than the ground truth (max_image_size): the
-// ground truth is sampled nearest-neighbour at each predicted pixel
-// (NearestGroundTruthIndex, colmap_ext/ground_truth.h). `normal` may be
-// empty (then normal errors are 0). `textureless` is CV_8UC1 at GT size.
+// ground truth and the masks are sampled nearest-neighbour at each predicted
+// pixel (NearestGroundTruthIndex, colmap_ext/ground_truth.h). `normal` may be
+// empty (then normal errors are 0).
 DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
                                  const DenseMap& gt_depth, const DenseMap& gt_normal,
-                                 const cv::Mat& textureless, const double thresholds[2]);
+                                 const RegionMasks& masks, const double thresholds[2]);
 
-// Mean over images of every figure (missing maps count as zeros).
+// Mean over images of every figure. Missing maps count as zeros; an image
+// whose region holds no ground-truth pixel has no figure for it and is left
+// out of that region's mean (num_gt is the sum over all images).
 DepthMapMetrics AverageMetrics(const std::vector<DepthMapMetrics>& maps);
 
 }  // namespace eval

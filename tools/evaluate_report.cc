@@ -4,6 +4,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "tools/edge_regions.h"
+
 namespace msp {
 namespace eval {
 namespace {
@@ -23,22 +25,36 @@ void PrintRow(std::ostream& out, const std::string& name, const RegionMetrics& m
   out << buf;
 }
 
-// The pixels a map table covers.
-enum class Region { kAll, kTextureless, kTextured };
+// The pixels a map table covers: a figure of DepthMapMetrics, its name in
+// the JSON document and its heading in the text.
+struct Region {
+  RegionMetrics DepthMapMetrics::*figures;
+  const char* key;
+  const char* heading;
+};
 
-const RegionMetrics& Select(const DepthMapMetrics& m, Region region) {
-  return region == Region::kAll ? m.all
-                                : (region == Region::kTextureless ? m.textureless : m.textured);
+constexpr Region kRegions[] = {
+    {&DepthMapMetrics::all, "all", "all pixels"},
+    {&DepthMapMetrics::textureless, "textureless", "textureless pixels only"},
+    {&DepthMapMetrics::textured, "textured", "textured pixels only"},
+    {&DepthMapMetrics::near_edge, "near_edge", "pixels near a depth edge"},
+    {&DepthMapMetrics::alike_edge, "alike_edge",
+     "pixels near a depth edge between alike colours"},
+};
+
+// How the edge bands were drawn, under their tables.
+void PrintEdgeBand(const EvaluationResult& r, std::ostream& out) {
+  out << "(near a depth edge = within " << r.average.edge_band_radius
+      << " ground-truth pixels, " << kEdgeBandPixels << " of the map, of neighbours whose depths "
+      << "differ by > " << 100.0 * kDepthEdgeJump << "%; alike colours = mean RGB "
+      << kEdgeSideSamples << " px beyond each side closer than " << kAlikeColourDistance
+      << " levels)\n";
 }
 
-void PrintMapTable(const EvaluationResult& r, Region region, std::ostream& out) {
+void PrintMapTable(const EvaluationResult& r, const Region& region, std::ostream& out) {
   const double* t = r.info.depth_relative_thresholds;
-  const char* what =
-      region == Region::kAll
-          ? "all pixels"
-          : (region == Region::kTextureless ? "textureless pixels only" : "textured pixels only");
-  out << "\nDepth maps (" << r.input_type << "), " << what << ", thresholds " << 100.0 * t[0]
-      << "% / " << 100.0 * t[1] << "% relative depth error\n";
+  out << "\nDepth maps (" << r.input_type << "), " << region.heading << ", thresholds "
+      << 100.0 * t[0] << "% / " << 100.0 * t[1] << "% relative depth error\n";
   char header[256];
   std::snprintf(header, sizeof(header), "%-16s %7s %7s %7s %7s %7s %9s %8s\n", "image", "valid%",
                 "cmp1%", "cmp2%", "acc1%", "acc2%", "med_rel", "med_n_deg");
@@ -48,9 +64,9 @@ void PrintMapTable(const EvaluationResult& r, Region region, std::ostream& out) 
       out << std::left << std::setw(16) << m.name << " (missing)\n" << std::right;
       continue;
     }
-    PrintRow(out, m.name, Select(m, region));
+    PrintRow(out, m.name, m.*region.figures);
   }
-  PrintRow(out, "average", Select(r.average, region));
+  PrintRow(out, "average", r.average.*region.figures);
 }
 
 void JsonRegion(std::ostringstream& s, const RegionMetrics& m) {
@@ -87,12 +103,12 @@ void JsonPreviews(std::ostringstream& s, const DepthMapMetrics& m) {
 // average has none).
 void JsonMap(std::ostringstream& s, const DepthMapMetrics& m, bool with_previews) {
   s << "{\"name\": \"" << m.name << "\", \"missing\": " << (m.missing ? "true" : "false")
-    << ", \"width\": " << m.width << ", \"height\": " << m.height << ", \"all\": ";
-  JsonRegion(s, m.all);
-  s << ", \"textureless\": ";
-  JsonRegion(s, m.textureless);
-  s << ", \"textured\": ";
-  JsonRegion(s, m.textured);
+    << ", \"width\": " << m.width << ", \"height\": " << m.height
+    << ", \"edge_band_radius\": " << m.edge_band_radius;
+  for (const Region& region : kRegions) {
+    s << ", \"" << region.key << "\": ";
+    JsonRegion(s, m.*region.figures);
+  }
   if (with_previews) {
     s << ", \"previews\": ";
     JsonPreviews(s, m);
@@ -109,9 +125,8 @@ void PrintReport(const EvaluationResult& r, std::ostream& out) {
   if (!r.maps.empty()) {
     out << "cmpK = within threshold K over all ground-truth pixels; accK = over valid "
            "predictions\n";
-    PrintMapTable(r, Region::kAll, out);
-    PrintMapTable(r, Region::kTextureless, out);
-    PrintMapTable(r, Region::kTextured, out);
+    for (const Region& region : kRegions) PrintMapTable(r, region, out);
+    PrintEdgeBand(r, out);
     if (r.num_missing_maps > 0) out << r.num_missing_maps << " map(s) missing\n";
     PrintPreviews(r, out);
   }

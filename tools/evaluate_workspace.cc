@@ -6,6 +6,7 @@
 #include "colmap_ext/dense_map_io.h"
 #include "colmap_ext/errors.h"
 #include "colmap_ext/map_previews.h"
+#include "tools/edge_regions.h"
 #include "tools/ply_points.h"
 
 namespace msp {
@@ -34,11 +35,23 @@ DepthMapMetrics EvaluateOne(const EvaluationOptions& options, const GroundTruthI
   if (std::filesystem::exists(normal_path)) normal = ReadDenseMap(normal_path);
   const DenseMap gt_depth = ReadDenseMap(info.DepthMapPath(name));
   const DenseMap gt_normal = ReadDenseMap(info.NormalMapPath(name));
-  const cv::Mat textureless = cv::imread(info.TexturelessPath(name), cv::IMREAD_GRAYSCALE);
-  if (textureless.empty()) throw InputError("cannot read " + info.TexturelessPath(name));
-  m = EvaluateDepthMap(depth, normal, gt_depth, gt_normal, textureless,
-                       info.depth_relative_thresholds);
+  RegionMasks masks;
+  masks.textureless = cv::imread(info.TexturelessPath(name), cv::IMREAD_GRAYSCALE);
+  if (masks.textureless.empty()) throw InputError("cannot read " + info.TexturelessPath(name));
+  // The edges' colours are those the method saw: the workspace's own image.
+  const std::string image_path = options.workspace + "/images/" + name;
+  const cv::Mat image = cv::imread(image_path, cv::IMREAD_COLOR);
+  if (image.empty()) throw InputError("cannot read " + image_path);
+  if (image.cols != gt_depth.width || image.rows != gt_depth.height) {
+    throw InputError(image_path + " is not the size of its ground truth");
+  }
+  const int band = EdgeBandRadius(gt_depth.width, gt_depth.height, depth.width, depth.height);
+  const EdgeRegions edges = FindEdgeRegions(gt_depth, image, band);
+  masks.near_edge = edges.near_edge;
+  masks.alike_edge = edges.alike_edge;
+  m = EvaluateDepthMap(depth, normal, gt_depth, gt_normal, masks, info.depth_relative_thresholds);
   m.name = name;
+  m.edge_band_radius = band;
   return m;
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace msp {
 namespace eval {
@@ -15,13 +16,14 @@ constexpr double kThresholds[2] = {0.01, 0.05};
 struct GroundTruth {
   DenseMap depth{8, 6, 1};
   DenseMap normal{8, 6, 3};
-  cv::Mat mask = cv::Mat(6, 8, CV_8UC1, cv::Scalar(0));
+  RegionMasks masks;
   GroundTruth() {
+    masks.textureless = cv::Mat(6, 8, CV_8UC1, cv::Scalar(0));
     for (int r = 0; r < depth.height; ++r) {
       for (int c = 0; c < depth.width; ++c) {
         depth.At(r, c) = 2.0f + 0.01f * c;
         normal.At(r, c, 2) = -1.0f;
-        if (c < depth.width / 2) mask.at<uint8_t>(r, c) = 255;
+        if (c < depth.width / 2) masks.textureless.at<uint8_t>(r, c) = 255;
       }
     }
   }
@@ -30,7 +32,7 @@ struct GroundTruth {
 TEST(EvaluateDepthMap, GroundTruthAgainstItselfIsPerfect) {
   const GroundTruth gt;
   const DepthMapMetrics m =
-      EvaluateDepthMap(gt.depth, gt.normal, gt.depth, gt.normal, gt.mask, kThresholds);
+      EvaluateDepthMap(gt.depth, gt.normal, gt.depth, gt.normal, gt.masks, kThresholds);
   EXPECT_EQ(m.all.num_gt, 48);
   EXPECT_EQ(m.textureless.num_gt, 24);
   EXPECT_EQ(m.textured.num_gt, 24);
@@ -56,7 +58,7 @@ TEST(EvaluateDepthMap, ScaledDepthMissesOnePercentButNotFive) {
     }
   }
   const DepthMapMetrics m =
-      EvaluateDepthMap(depth, normal, gt.depth, gt.normal, gt.mask, kThresholds);
+      EvaluateDepthMap(depth, normal, gt.depth, gt.normal, gt.masks, kThresholds);
   EXPECT_DOUBLE_EQ(m.all.complete[0], 0.0);
   EXPECT_DOUBLE_EQ(m.all.complete[1], 1.0);
   EXPECT_NEAR(m.all.median_rel_error, 0.03, 1e-6);
@@ -72,7 +74,7 @@ TEST(EvaluateDepthMap, InvalidPixelsCountAgainstCompletenessOnly) {
   }
   depth.At(0, 0) = std::nanf("");
   const DepthMapMetrics m =
-      EvaluateDepthMap(depth, DenseMap(), gt.depth, gt.normal, gt.mask, kThresholds);
+      EvaluateDepthMap(depth, DenseMap(), gt.depth, gt.normal, gt.masks, kThresholds);
   EXPECT_DOUBLE_EQ(m.all.valid_fraction, 0.5);
   EXPECT_DOUBLE_EQ(m.all.complete[0], 0.5);
   EXPECT_DOUBLE_EQ(m.all.accurate[0], 1.0);
@@ -90,20 +92,74 @@ TEST(EvaluateDepthMap, SmallerPredictionSamplesGroundTruthNearest) {
     for (int c = 0; c < 4; ++c) depth.At(r, c) = gt.depth.At(2 * r, 2 * c);
   }
   const DepthMapMetrics m =
-      EvaluateDepthMap(depth, DenseMap(), gt.depth, gt.normal, gt.mask, kThresholds);
+      EvaluateDepthMap(depth, DenseMap(), gt.depth, gt.normal, gt.masks, kThresholds);
   EXPECT_EQ(m.width, 4);
   EXPECT_EQ(m.all.num_gt, 12);
   EXPECT_DOUBLE_EQ(m.all.median_rel_error, 0.0);
   EXPECT_EQ(m.textureless.num_gt, 6);
 }
 
+TEST(EvaluateDepthMap, EdgeRegionsFollowTheirMasks) {
+  GroundTruth gt;
+  gt.masks.near_edge = cv::Mat(6, 8, CV_8UC1, cv::Scalar(0));
+  gt.masks.alike_edge = cv::Mat(6, 8, CV_8UC1, cv::Scalar(0));
+  gt.masks.near_edge.colRange(3, 5).setTo(255);
+  gt.masks.alike_edge.colRange(4, 5).setTo(255);
+  DenseMap depth = gt.depth;
+  for (int r = 0; r < 6; ++r) depth.At(r, 4) = 0.0f;
+  const DepthMapMetrics m =
+      EvaluateDepthMap(depth, DenseMap(), gt.depth, gt.normal, gt.masks, kThresholds);
+  EXPECT_EQ(m.near_edge.num_gt, 12);
+  EXPECT_EQ(m.near_edge.num_valid, 6);
+  EXPECT_DOUBLE_EQ(m.near_edge.complete[0], 0.5);
+  EXPECT_EQ(m.alike_edge.num_gt, 6);
+  EXPECT_EQ(m.alike_edge.num_valid, 0);
+  EXPECT_DOUBLE_EQ(m.alike_edge.complete[0], 0.0);
+  EXPECT_EQ(m.all.num_gt, 48);  // the edge regions take no pixel from the others
+  EXPECT_EQ(m.textureless.num_gt + m.textured.num_gt, 48);
+}
+
+TEST(EvaluateDepthMap, EmptyEdgeMasksHoldNoPixel) {
+  const GroundTruth gt;
+  const DepthMapMetrics m =
+      EvaluateDepthMap(gt.depth, DenseMap(), gt.depth, gt.normal, gt.masks, kThresholds);
+  EXPECT_EQ(m.near_edge.num_gt, 0);
+  EXPECT_EQ(m.alike_edge.num_gt, 0);
+  EXPECT_DOUBLE_EQ(m.near_edge.complete[0], 0.0);
+}
+
+TEST(EvaluateDepthMap, MaskOfAnotherSizeIsAnError) {
+  GroundTruth gt;
+  gt.masks.near_edge = cv::Mat(3, 4, CV_8UC1, cv::Scalar(255));
+  EXPECT_THROW(
+      EvaluateDepthMap(gt.depth, DenseMap(), gt.depth, gt.normal, gt.masks, kThresholds),
+      std::invalid_argument);
+}
+
 TEST(AverageMetrics, MeansPerImageFigures) {
   DepthMapMetrics a, b;
+  a.all.num_gt = 10;
   a.all.complete[0] = 1.0;
   b.all.complete[0] = 0.5;
   b.missing = true;
   const DepthMapMetrics avg = AverageMetrics({a, b});
   EXPECT_DOUBLE_EQ(avg.all.complete[0], 0.75);
+}
+
+TEST(AverageMetrics, ImagesWithoutARegionAreLeftOutOfItsMean) {
+  // a has no alike-edge pixel, b has 10, c is missing (counts as zeros).
+  DepthMapMetrics a, b, c;
+  a.all.num_gt = b.all.num_gt = 100;
+  a.all.complete[0] = 0.9;
+  b.all.complete[0] = 0.6;
+  b.alike_edge.num_gt = 10;
+  b.alike_edge.complete[0] = 0.6;
+  c.missing = true;
+  const DepthMapMetrics avg = AverageMetrics({a, b, c});
+  EXPECT_DOUBLE_EQ(avg.all.complete[0], 0.5);
+  EXPECT_DOUBLE_EQ(avg.alike_edge.complete[0], 0.3);
+  EXPECT_EQ(avg.alike_edge.num_gt, 10);
+  EXPECT_EQ(AverageMetrics({a}).alike_edge.complete[0], 0.0);
 }
 
 }  // namespace

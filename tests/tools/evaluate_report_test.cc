@@ -60,6 +60,28 @@ TEST(EvaluateReport, JsonHasAPreviewObjectPerImage) {
   EXPECT_EQ(json.find("\"previews\"", average), std::string::npos);  // figures only
 }
 
+TEST(EvaluateReport, EdgeRegionsInTextAndJson) {
+  EvaluationResult r = TwoImages();
+  r.maps[0].near_edge.num_gt = 17;
+  r.maps[0].alike_edge.num_gt = 5;
+  r.maps[0].edge_band_radius = 8;
+  r.average = AverageMetrics(r.maps);
+  std::ostringstream out;
+  PrintReport(r, out);
+  EXPECT_NE(out.str().find("pixels near a depth edge,"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("pixels near a depth edge between alike colours,"),
+            std::string::npos);
+  EXPECT_NE(out.str().find("within 8 ground-truth pixels"), std::string::npos);
+  const std::string json = ReportJson(r);
+  EXPECT_NE(json.find("\"edge_band_radius\": 8, \"all\": "), std::string::npos) << json;
+  EXPECT_NE(json.find("\"near_edge\": {\"num_gt\": 17,"), std::string::npos);
+  EXPECT_NE(json.find("\"alike_edge\": {\"num_gt\": 5,"), std::string::npos);
+  const size_t average = json.find("\"average\":");
+  ASSERT_NE(average, std::string::npos);
+  EXPECT_NE(json.find("\"near_edge\": {\"num_gt\": 17,", average), std::string::npos);
+  EXPECT_NE(json.find("\"alike_edge\": {\"num_gt\": 5,", average), std::string::npos);
+}
+
 }  // namespace
 }  // namespace eval
 }  // namespace msp

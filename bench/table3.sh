@@ -1,0 +1,140 @@
+#!/usr/bin/env bash
+# The MSP-MVS ablation in the shape of the paper's Table 3: runs msp_stereo on
+# a fresh copy of a workspace with ground truth (the bundled scene) once per
+# row below, one after the other, fuses with COLMAP (geometric) and evaluates,
+# and prints a Markdown table: time, the time ratio to the first row, fused
+# F1 / completeness / accuracy (>= 3 views) at 0.5 % and 2 % of the scene
+# extent, and the depth maps' share within 1 % on textureless pixels, near a
+# true depth edge and near an edge between alike colours (msp_evaluate).
+#
+#   bench/table3.sh [--rows ID,ID,...] [--drop_unknown] <workspace> [msp_stereo options...]
+#
+# The options after the workspace go to every row, e.g. a quick look:
+#   bench/table3.sh WS --PatchMatchStereo.max_image_size 320 --MspStereo.num_threads 1
+# --rows runs the named rows only (ids below), in the table's order.
+# --drop_unknown leaves out of each row the options this msp_stereo does not
+# accept, and names them under the table: for a binary built before a part
+# existed, whose rows then run that part as that binary does. Without it an
+# unknown option stops the script before the first run.
+# Binaries from $MSP_BIN (default build/bin); colmap from $COLMAP (/usr/bin/colmap).
+set -euo pipefail
+source "$(dirname "$0")/lib/run_row.sh"
+
+# The parts of the method, each switched off.
+NO_PRIOR="--MspStereo.segmentation_prior false"
+NO_AGR="--MspStereo.edge_aggregation false"
+NO_REF="--MspStereo.edge_refinement false"
+NO_GEO="--MspStereo.geometry_layers false"
+NO_EQD="--MspStereo.equidistribution false"
+NO_CLU="--MspStereo.disassemble_clustering false"
+NO_SYN="--MspStereo.synergistic_optimization false"
+
+# id | label | options. From the baseline to `full` each row adds one part to
+# the row above (segment planes, our own step, stay on throughout); the last
+# three take one piece out of the full method's 3D optimization.
+rows=(
+  "baseline|APD-MVS baseline|$NO_PRIOR $NO_EQD $NO_CLU $NO_SYN"
+  "prior|+ prior: colour layers, union of their edges|$NO_AGR $NO_REF $NO_GEO $NO_EQD $NO_CLU $NO_SYN"
+  "aggregation|+ edge aggregation (eqs. 4-5)|$NO_REF $NO_GEO $NO_EQD $NO_CLU $NO_SYN"
+  "refinement|+ edge refinement (CRF, eq. 6)|$NO_GEO $NO_EQD $NO_CLU $NO_SYN"
+  "geometry|+ geometry layers|$NO_EQD $NO_CLU $NO_SYN"
+  "equidistribution|+ adaptive equidistribution (eq. 7)|$NO_CLU $NO_SYN"
+  "clustering|+ disassemble-clustering|$NO_SYN"
+  "full|+ 3D optimization (eqs. 8-9) = MSP-MVS|"
+  "novar|MSP-MVS w/o Var. (omega = 0)|--MspStereo.variance_weight 0"
+  "nocost|MSP-MVS w/o Cst.|--MspStereo.profile_cost_term false"
+  "mu3|MSP-MVS, mu = 3|--MspStereo.disparity_samples 3"
+)
+
+selected=""
+drop_unknown=0
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --rows) selected=$2; shift 2 ;;
+    --drop_unknown) drop_unknown=1; shift ;;
+    *) break ;;
+  esac
+done
+[ $# -gt 0 ] || { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 1; }
+ablation_init "$1"
+shift
+common=("$@")
+require_known_options "${common[@]}"
+
+ids=()
+for row in "${rows[@]}"; do ids+=("${row%%|*}"); done
+if [ -n "$selected" ]; then
+  for id in ${selected//,/ }; do
+    printf '%s\n' "${ids[@]}" | grep -qxF -- "$id" ||
+      { echo "--rows: no row \`$id\`; rows: ${ids[*]}" >&2; exit 1; }
+  done
+  kept=()
+  for row in "${rows[@]}"; do
+    case ",$selected," in *",${row%%|*},"*) kept+=("$row") ;; esac
+  done
+  rows=("${kept[@]}")
+fi
+
+# Every row's options, checked (or pruned) before the first run.
+notes=()
+plans=()
+missing=""
+for row in "${rows[@]}"; do
+  id=${row%%|*}
+  rest=${row#*|}
+  read -r -a options <<< "${rest#*|}"
+  unknown=$(unknown_options ${options[@]+"${options[@]}"})
+  if [ -n "$unknown" ] && [ "$drop_unknown" = 0 ]; then
+    missing+="  $id:$(printf ' %s' $unknown)"$'\n'
+  elif [ -n "$unknown" ]; then
+    kept=()
+    for ((i = 0; i < ${#options[@]}; i += 2)); do
+      grep -qxF -- "${options[i]}" <<< "$unknown" || kept+=("${options[i]}" "${options[i + 1]}")
+    done
+    options=(${kept[@]+"${kept[@]}"})
+    notes+=("$id ran without$(printf ' %s' $unknown)")
+  fi
+  plans+=("$id|${rest%%|*}|${options[*]+${options[*]}}")
+done
+if [ -n "$missing" ]; then
+  printf '%s does not know these options (--drop_unknown runs without them):\n%s' \
+    "$bin/msp_stereo" "$missing" >&2
+  exit 1
+fi
+
+echo "msp_stereo options of every row: ${common[*]+${common[*]}}"
+echo
+printf '| row | wall s | CPU-s | CPU x | F1 0.5 %% | comp. 0.5 %% | acc. 0.5 %% | F1 2 %% | comp. 2 %% | acc. 2 %% | textureless within 1 %% | near-edge within 1 %% (valid) | alike-edge within 1 %% (valid) |\n'
+printf '|---|---|---|---|---|---|---|---|---|---|---|---|---|\n'
+first_user=""
+n=0
+for plan in "${plans[@]}"; do
+  n=$((n + 1))
+  id=${plan%%|*}
+  rest=${plan#*|}
+  label=${rest%%|*}
+  read -r -a options <<< "${rest#*|}"
+  echo "row $n/${#plans[@]} ($id): msp_stereo ${common[*]+${common[*]}} ${options[*]+${options[*]}}" >&2
+  run_row ${common[@]+"${common[@]}"} ${options[@]+"${options[@]}"}
+  read -r wall user < "$scratch/time"
+  first_user=${first_user:-$user}
+  /usr/bin/python3 - "$scratch/eval.json" "$label" "$wall" "$user" "$first_user" <<'PY'
+import json, sys
+e = json.load(open(sys.argv[1]))
+label, wall, user, first_user = sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), float(sys.argv[5])
+pct = lambda v: "%.2f" % (100.0 * v)
+fused = []
+for t in e["fused"]["thresholds"]:  # 0.5 % then 2 % of the extent
+    fused += [pct(t["f1_multi"]), pct(t["completeness_multi"]), pct(t["accuracy"])]
+a = e["average"]
+region = lambda r: "%s (%s)" % (pct(a[r]["complete_1"]), pct(a[r]["valid_fraction"]))
+ratio = user / first_user if first_user > 0 else float("nan")
+print("| " + " | ".join([label, "%.0f" % wall, "%.0f" % user, "%.2f" % ratio] + fused +
+                        [pct(a["textureless"]["complete_1"]), region("near_edge"),
+                         region("alike_edge")]) + " |")
+PY
+done
+echo
+echo "CPU x = user CPU time over the first row's. Fused figures over the surface seen by >= 3 views;"
+echo "map figures: share of ground-truth pixels within 1 % depth (and with a valid depth), mean over images."
+for note in ${notes[@]+"${notes[@]}"}; do echo "$note"; done

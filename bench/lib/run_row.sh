@@ -51,7 +51,7 @@ run_logged() {
   if [ "$rc" -ne 0 ]; then
     {
       echo "FAILED (exit $rc): $*"
-      echo "--- last lines of $log:"
+      echo "--- last lines of its output:"
       tail -n 30 "$log"
     } >&2
     exit 1

@@ -18,6 +18,7 @@
 # unknown option stops the script before the first run.
 # Binaries from $MSP_BIN (default build/bin); colmap from $COLMAP (/usr/bin/colmap).
 set -euo pipefail
+# shellcheck source=bench/lib/run_row.sh
 source "$(dirname "$0")/lib/run_row.sh"
 
 # The parts of the method, each switched off.
@@ -85,14 +86,14 @@ for row in "${rows[@]}"; do
   read -r -a options <<< "${rest#*|}"
   unknown=$(unknown_options ${options[@]+"${options[@]}"})
   if [ -n "$unknown" ] && [ "$drop_unknown" = 0 ]; then
-    missing+="  $id:$(printf ' %s' $unknown)"$'\n'
+    missing+="  $id: $(paste -sd ' ' <<< "$unknown")"$'\n'
   elif [ -n "$unknown" ]; then
     kept=()
     for ((i = 0; i < ${#options[@]}; i += 2)); do
       grep -qxF -- "${options[i]}" <<< "$unknown" || kept+=("${options[i]}" "${options[i + 1]}")
     done
     options=(${kept[@]+"${kept[@]}"})
-    notes+=("$id ran without$(printf ' %s' $unknown)")
+    notes+=("$id ran without $(paste -sd ' ' <<< "$unknown")")
   fi
   plans+=("$id|${rest%%|*}|${options[*]+${options[*]}}")
 done

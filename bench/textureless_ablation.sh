@@ -11,6 +11,7 @@
 # e.g. bench/textureless_ablation.sh WS --PatchMatchStereo.max_image_size 320
 # Binaries from $MSP_BIN (default build/bin); colmap from $COLMAP (/usr/bin/colmap).
 set -euo pipefail
+# shellcheck source=bench/lib/run_row.sh
 source "$(dirname "$0")/lib/run_row.sh"
 ablation_init "$1"
 shift

@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # The part of an ablation run every row shares, sourced by bench/table3.sh and
 # bench/textureless_ablation.sh: msp_stereo on a fresh copy of a workspace
 # with ground truth (the bundled scene), COLMAP's geometric fusion, then
@@ -37,7 +38,7 @@ require_known_options() {
   local unknown
   unknown=$(unknown_options "$@")
   if [ -n "$unknown" ]; then
-    echo "$bin/msp_stereo does not know:" $unknown >&2
+    echo "$bin/msp_stereo does not know: $(paste -sd ' ' <<< "$unknown")" >&2
     exit 1
   fi
 }

@@ -126,6 +126,7 @@ void CheckMspStereoOptions(const MspStereoOptions& o) {
   MSP_CHECK_RANGE(o, reliable_min_spread, 0.0, 2.0);
   MSP_CHECK_RANGE(o, anchor_max_distance, core::kFirstRayRadius, 1 << 16, Interval::kClosed,
                   " (the first ray sample lies 2 px from the pixel)");
+  MSP_CHECK_RANGE(o, equidistribution_iterations, 1, core::kMaxEquidistributionIterations);
   MSP_CHECK_RANGE(o, num_mask_levels, 1, core::kMaxLabelLayers, Interval::kClosed,
                   " (best-layer sets are 32-bit sets, kMaxLabelLayers)");
   MSP_CHECK_POSITIVE(o, crf_alpha);

@@ -224,6 +224,12 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
       "[0, 2]. With several curve minima, the others must lie this far above the lowest.");
   MSP_ADD_OPTION(t, *m, anchor_max_distance,
                  "Anchor search range in pixels of the current round (>= 2).");
+  MSP_ADD_OPTION(t, *m, equidistribution,
+                 "Adaptive equidistribution (eq. 7): re-cut each unreliable pixel's 8 anchor "
+                 "sectors so that each faces about as many reliable pixels, recovering anchors in "
+                 "sectors walled off by depth edges; false = fixed 45-degree sectors (w/o Eqd.).");
+  MSP_ADD_OPTION(t, *m, equidistribution_iterations,
+                 "[1, 3]. Re-cuts of the sectors per pixel (each casts up to 8 boundary rays).");
   MSP_ADD_OPTION(t, *m, segmentation_prior,
                  "Confine anchors by the multi-granularity segmentation prior (mask layers from " +
                      MSP_OPTION_FLAG(*m, mask_path) +

@@ -119,6 +119,12 @@ struct MspStereoOptions {
   double reliable_min_spread = 0.2;
   // Anchor search range in pixels of the current round (APD: 100).
   int anchor_max_distance = 100;
+  // Adaptive equidistribution (eq. 7, docs/method.md section 5): re-cut each unreliable pixel's
+  // 8 anchor sectors so that each faces about as many reliable pixels; false = fixed 45-degree
+  // sectors ("w/o Eqd.").
+  bool equidistribution = true;
+  // Re-cuts per pixel (1..3); each casts up to 8 more boundary rays.
+  int equidistribution_iterations = 2;
   // Segmentation prior (docs/method.md section 4): anchors never cross its edges; "w/o Mul.".
   bool segmentation_prior = true;
   // Aggregate layers per region by best anchor subsets (eqs. 4-5); false = union ("w/o Agr.").

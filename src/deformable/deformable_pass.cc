@@ -36,6 +36,8 @@ DeformableStepReport DeformablePass::Run(const Pass& pass, const core::PassParam
   DeformableSettings settings;
   settings.anchors = core::DefaultAnchorParams(pass.round, params.depth_max - params.depth_min,
                                                msp_.anchor_max_distance);
+  settings.anchors.equidistribution = msp_.equidistribution;
+  settings.anchors.equidistribution_iterations = msp_.equidistribution_iterations;
   settings.cost = core::DefaultDeformableParams();
   ConfineAnchors(state->edges, maps, &settings);
   report.sweeps =

@@ -1,6 +1,7 @@
 // Anchor search of the APD-MVS baseline (docs/method.md section 3.2): from an unreliable
-// pixel p, rays in 8 sectors of 45 degrees look for reliable pixels at radii
-// 2, 4, 8, 16, 32, then every 25 px; a non-reliable hit snaps to its nearest
+// pixel p, rays in 8 sectors of 45 degrees (or the sectors of adaptive
+// equidistribution, section 5) look for reliable pixels at radii 2, 4, 8, 16,
+// 32, then every 25 px; a non-reliable hit snaps to its nearest
 // reliable pixel. A RANSAC plane through the hits' 3D points (triangles that
 // contain p) rejects hits on other surfaces; the inliers closest to it are the
 // anchors whose windows form p's deformable patch (paper eq. 3).
@@ -9,13 +10,15 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/deformable/anchor_maps.h"
 #include "core/deformable/deformable_limits.h"
+#include "core/deformable/equidistribution.h"
+#include "core/deformable/sectors.h"
 #include "core/math/camera.h"
 #include "core/math/hd.h"
 #include "core/math/plane.h"
 #include "core/math/rng.h"
 #include "core/math/vec.h"
-#include "core/prior/segment_crossing.h"
 
 namespace msp {
 namespace core {
@@ -24,11 +27,6 @@ namespace core {
 constexpr int kFirstRayRadius = 2;
 constexpr int kLastDoublingRadius = 32;
 constexpr int kRayRadiusStep = 25;
-constexpr float kSectorDegrees = 360.0f / kNumSectors;
-constexpr float kDegToRad = 3.14159265358979f / 180.0f;
-// A snapped hit must stay inside the ray's sector: within half a sector
-// (22.5 degrees) of the sector's central direction.
-constexpr float kHalfSectorCos = 0.923879533f;  // cos(22.5 deg)
 // APD: 50 RANSAC tries, inlier threshold (0.01 - 0.00125 r) * depth range for
 // round r (tighter on finer rounds), at least 6 inliers, 4 sectors with a hit.
 constexpr int kDefaultRansacIterations = 50;
@@ -49,52 +47,11 @@ struct AnchorParams {
   int min_inliers;
   int min_sectors;  // fewer sectors with a hit -> no anchors
   int ransac_iterations;
+  // Adaptive equidistribution (equidistribution.h): re-cut the sectors per
+  // pixel before the rays are cast; false = the fixed 45-degree sectors.
+  bool equidistribution = false;
+  int equidistribution_iterations = kDefaultEquidistributionIterations;  // 1..3
 };
-
-// What the search reads: the classes of the last pass, the nearest-reliable
-// map (index or -1), the depths of the reference image and the depth edges of
-// the segmentation prior (same size; edges.data == nullptr = unconfined, as
-// in APD-MVS and the ablation "w/o Mul."). `nearest_edge`, when given, maps
-// every pixel to its nearest edge pixel (-1: none): walks that cannot reach
-// an edge are then not taken.
-struct AnchorMaps {
-  const uint8_t* classes;
-  const int* nearest;
-  const float* depth;
-  int width;
-  int height;
-  BoundaryView edges;
-  const int* nearest_edge = nullptr;
-};
-
-MSP_HD bool IsConfined(const AnchorMaps& maps) { return maps.edges.data != nullptr; }
-
-// True when no edge pixel can lie on the walk from (c0, r0) to (c1, r1), both
-// in the image: every pixel of a Bresenham walk lies within half a pixel of
-// the segment, so within its length + 0.5 of the start (a pixel of margin
-// here, for rounding), and its bounding box keeps it in the image.
-MSP_HD bool OutOfEdgeReach(const AnchorMaps& maps, int c0, int r0, int c1, int r1) {
-  if (maps.nearest_edge == nullptr) return false;
-  const int e = maps.nearest_edge[r0 * maps.width + c0];
-  if (e < 0) return true;
-  const float ex = static_cast<float>(e % maps.width - c0);
-  const float ey = static_cast<float>(e / maps.width - r0);
-  const float lx = static_cast<float>(c1 - c0), ly = static_cast<float>(r1 - r0);
-  const float reach = sqrtf(lx * lx + ly * ly) + 1.0f;
-  return ex * ex + ey * ey > reach * reach;
-}
-
-// SegmentCrossesBoundary on the edges of `maps`, skipped when out of reach.
-MSP_HD bool WalkCrossesEdge(const AnchorMaps& maps, int c0, int r0, int c1, int r1) {
-  return !OutOfEdgeReach(maps, c0, r0, c1, r1) &&
-         SegmentCrossesBoundary(maps.edges, c0, r0, c1, r1);
-}
-
-// Paper "Edge Aggregation": the anchor s is admissible for p only if the
-// line p -> s crosses no edge of B'.
-MSP_HD bool CrossesDepthEdge(const AnchorMaps& maps, int col, int row, int q) {
-  return IsConfined(maps) && WalkCrossesEdge(maps, col, row, q % maps.width, q / maps.width);
-}
 
 // The anchors of one pixel and the RANSAC plane n^T X + plane_dist = 0
 // (reference camera frame, n unit and facing the camera at p).
@@ -148,24 +105,17 @@ MSP_HD bool Contains(const int* values, int n, int v) {
   return false;
 }
 
-// A unit direction in the image plane.
-struct RayDirection {
-  float x, y;
-};
-
-MSP_HD RayDirection DirectionAt(float degrees) {
-  return RayDirection{cosf(degrees * kDegToRad), sinf(degrees * kDegToRad)};
-}
-
 // The reliable pixel hit by the ray `ray` of the sector whose centre line is
-// `sector`, or -1. A hit already taken by another ray (neighbouring rays
-// often snap to the same pixel) does not stop the ray: it walks on to find a
-// distinct one. When confined, the ray ends at the first ray position behind
+// `sector`, or -1; a snapped hit must lie within acos(min_cos) of that line
+// (inside the sector's span). A hit already taken by another ray (neighbouring
+// rays often snap to the same pixel) does not stop the ray: it walks on to
+// find a distinct one. When confined, the ray ends at the first ray position behind
 // a depth edge (every farther one is behind it too), and a snapped hit behind
 // an edge is skipped. The ray is walked once, position to position, rather
 // than from p again for every position.
 MSP_HD int CastAnchorRay(const AnchorMaps& maps, int col, int row, RayDirection sector,
-                         RayDirection ray, int max_distance, const int* taken, int num_taken) {
+                         float min_cos, RayDirection ray, int max_distance, const int* taken,
+                         int num_taken) {
   int walked_col = col, walked_row = row;  // the ray is clear of edges up to here
   // The last snapped hit found behind an edge: consecutive radii often repeat it.
   int crossing = -1;
@@ -187,8 +137,7 @@ MSP_HD int CastAnchorRay(const AnchorMaps& maps, int col, int row, RayDirection 
       const float oy = static_cast<float>(q / maps.width - row);
       const float len2 = ox * ox + oy * oy;
       if (len2 > static_cast<float>(max_distance) * max_distance || len2 <= 0.0f) continue;
-      if (ox * sector.x + oy * sector.y < kHalfSectorCos * sqrtf(len2))
-        continue;  // left the sector
+      if (ox * sector.x + oy * sector.y < min_cos * sqrtf(len2)) continue;  // left the sector
     }
     if (!(maps.depth[q] > 0.0f) || Contains(taken, num_taken, q)) continue;
     // The walk to a snapped hit is the costly test: last, and once per hit.
@@ -201,24 +150,26 @@ MSP_HD int CastAnchorRay(const AnchorMaps& maps, int col, int row, RayDirection 
   return -1;
 }
 
-// Ray hits of all sectors, all distinct. Returns the number of hits;
-// *num_sectors receives the number of sectors with at least one.
+// Ray hits of all sectors, all distinct: the fixed sectors, or those of
+// adaptive equidistribution. Returns the number of hits; *num_sectors
+// receives the number of sectors with at least one.
 MSP_HD int CollectAnchorHits(const AnchorMaps& maps, int col, int row, const AnchorParams& params,
                              int* hits, int* num_sectors) {
-  const int rays = params.rays_per_sector < 1
-                       ? 1
-                       : (params.rays_per_sector > kMaxRaysPerSector ? kMaxRaysPerSector
-                                                                     : params.rays_per_sector);
-  const float ray_step = kSectorDegrees / rays;
+  SectorRays sectors;
+  if (params.equidistribution) {
+    EquidistributedSectorRays(maps, col, row, params.max_distance,
+                              params.equidistribution_iterations, params.rays_per_sector, &sectors);
+  } else {
+    FixedSectorRays(params.rays_per_sector, &sectors);
+  }
+  const int rays = sectors.rays;
   int n = 0;
   *num_sectors = 0;
   for (int sector = 0; sector < kNumSectors; ++sector) {
-    const RayDirection centre = DirectionAt(kSectorDegrees * sector);
     bool any = false;
     for (int k = 0; k < rays; ++k) {
-      const float degrees = kSectorDegrees * sector - 0.5f * kSectorDegrees + (k + 0.5f) * ray_step;
-      const int q =
-          CastAnchorRay(maps, col, row, centre, DirectionAt(degrees), params.max_distance, hits, n);
+      const int q = CastAnchorRay(maps, col, row, sectors.centre[sector], sectors.min_cos[sector],
+                                  sectors.ray[sector * rays + k], params.max_distance, hits, n);
       if (q < 0) continue;
       any = true;
       hits[n++] = q;

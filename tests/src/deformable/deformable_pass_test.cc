@@ -195,6 +195,59 @@ TEST(DeformablePass, ScheduleAndStateMustAgree) {
   EXPECT_THROW(step.Run(DeformablePassWithClasses(), s.params, &s.state), std::logic_error);
 }
 
+// Equidistribution off is the fixed-sector search bit for bit: the step with
+// the switch off leaves the same planes, costs and prior anchors as the
+// sweeps run directly with the baseline's anchor parameters (no
+// equidistribution fields set), from random planes. With the switch on the
+// prior's anchors change.
+TEST(DeformablePass, EquidistributionOffIsTheFixedSectorSearch) {
+  Scene off, direct, on;
+  for (Scene* s : {&off, &direct, &on}) {
+    InitializeState(s->params, kNumThreads);
+    s->state.classes = BlockClasses();
+  }
+  Pass pass = DeformablePassWithClasses();
+  pass.prior = true;
+  MspStereoOptions msp;
+  msp.equidistribution = false;
+  DeformablePass off_step(msp, kNumThreads);
+  off_step.Run(pass, off.params, &off.state);
+  msp.equidistribution = true;
+  DeformablePass on_step(msp, kNumThreads);
+  on_step.Run(pass, on.params, &on.state);
+
+  const ReliabilityMaps maps = MakeReliabilityMaps(BlockClasses(), kWidth, kHeight, kNumThreads);
+  direct.state.classes.clear();
+  DeformableSettings settings;
+  settings.anchors =
+      core::DefaultAnchorParams(pass.round, direct.params.depth_max - direct.params.depth_min,
+                                MspStereoOptions().anchor_max_distance);
+  settings.cost = core::DefaultDeformableParams();
+  DeformableBuffers buffers;
+  std::vector<core::PriorAnchors> direct_anchors;
+  RunDeformableCheckerboardIterations(direct.params, maps, settings, pass.iterations, kNumThreads,
+                                      &buffers, &direct_anchors);
+
+  EXPECT_EQ(off.state.depth, direct.state.depth);
+  EXPECT_EQ(off.state.normal, direct.state.normal);
+  EXPECT_EQ(off.state.cost, direct.state.cost);
+  EXPECT_EQ(off.state.mask, direct.state.mask);
+  const auto same_anchors = [](const std::vector<core::PriorAnchors>& a,
+                               const std::vector<core::PriorAnchors>& b) {
+    if (a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i) {
+      if (a[i].col != b[i].col || a[i].row != b[i].row || a[i].count != b[i].count) return false;
+      for (int k = 0; k < a[i].count; ++k) {
+        if (a[i].cols[k] != b[i].cols[k] || a[i].rows[k] != b[i].rows[k]) return false;
+      }
+    }
+    return true;
+  };
+  ASSERT_FALSE(direct_anchors.empty());
+  EXPECT_TRUE(same_anchors(off_step.prior_anchors(), direct_anchors));
+  EXPECT_FALSE(same_anchors(on_step.prior_anchors(), direct_anchors));
+}
+
 // A confining edge all round the block leaves its pixels no anchor; the same
 // ring without the confining bit confines nothing.
 TEST(DeformablePass, OnlyConfiningEdgesConfineTheAnchors) {

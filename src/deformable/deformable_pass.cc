@@ -37,6 +37,12 @@ DeformableStepReport DeformablePass::Run(const Pass& pass, const core::PassParam
   settings.anchors = core::DefaultAnchorParams(pass.round, params.depth_max - params.depth_min,
                                                msp_.anchor_max_distance);
   settings.cost = core::DefaultDeformableParams();
+  if (msp_.disassemble_clustering) {
+    settings.anchors.max_anchors = core::kMaxKeptAnchors;
+    settings.cost.disassemble_clustering = true;
+    settings.cost.clusters =
+        core::ClusterParams{msp_.dbscan_eta, static_cast<float>(msp_.dbscan_gamma)};
+  }
   ConfineAnchors(state->edges, maps, &settings);
   report.sweeps =
       RunDeformableCheckerboardIterations(params, maps, settings, pass.iterations, num_threads_,

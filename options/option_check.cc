@@ -141,6 +141,8 @@ void CheckMspStereoOptions(const MspStereoOptions& o) {
   MSP_CHECK_POSITIVE(o, crf_beta);
   MSP_CHECK_RANGE(o, crf_unary_confidence, 0.0, 1.0, Interval::kOpen);
   MSP_CHECK_POSITIVE(o, crf_iterations);
+  MSP_CHECK_RANGE(o, dbscan_eta, 0, core::kMaxKeptAnchors - 1);
+  MSP_CHECK_NON_NEGATIVE(o, dbscan_gamma);
 }
 
 void CheckStereoCommandOptions(const StereoCommandOptions& o) {

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <utility>
 
+#include "core/deformable/deformable_limits.h"
 #include "core/prior/prior_limits.h"
 #include "options/command_line_common.h"
 #include "options/option_name.h"
@@ -267,6 +268,18 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
   MSP_ADD_OPTION(t, *m, crf_unary_confidence,
                  "(0, 1). Probability the CRF unary gives the aggregated label.");
   MSP_ADD_OPTION(t, *m, crf_iterations, "Mean-field iterations of the CRF (>= 1).");
+  MSP_ADD_OPTION(t, *m, disassemble_clustering,
+                 "Disassemble-clustering: keep every anchor within the RANSAC threshold (up to "
+                 "4 per sector), cluster them with DBSCAN in the image and let each cluster "
+                 "(at most 8, the largest) count once in the deformable cost, its k anchors "
+                 "with sub-patches of side 11/k px; false = APD's 8 anchor windows (w/o Clu.).");
+  MSP_ADD_OPTION(t, *m, dbscan_eta,
+                 "[0, " + std::to_string(core::kMaxKeptAnchors - 1) +
+                     "]. DBSCAN eta: an anchor with at least this many other anchors within " +
+                     MSP_OPTION_FLAG(*m, dbscan_gamma) + " is a core point.");
+  MSP_ADD_OPTION(t, *m, dbscan_gamma,
+                 "[0, inf). DBSCAN gamma: neighbourhood radius in pixels of the current round; 0 "
+                 "= automatic, max(3, 0.25 x the median distance of the anchors to the pixel).");
 }
 
 // The one list of options: the top-level ones, then each section's.

@@ -151,6 +151,13 @@ struct MspStereoOptions {
   double crf_unary_confidence = 0.7;
   // CRF mean-field iterations (count).
   int crf_iterations = 5;
+  // Disassemble-clustering (docs/method.md section 6): every RANSAC inlier is an anchor, DBSCAN
+  // clusters of them are the deformable patch's sub-patch groups; false = APD's 8 anchors.
+  bool disassemble_clustering = true;
+  // DBSCAN eta: neighbours (the point not counted) within dbscan_gamma that make a core anchor.
+  int dbscan_eta = 2;
+  // DBSCAN gamma in pixels of the current round; 0 = max(3, 0.25 x median anchor distance to p).
+  double dbscan_gamma = 0.0;
 };
 
 // Everything the msp_stereo command needs; top-level options have no section.

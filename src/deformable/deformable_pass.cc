@@ -39,6 +39,12 @@ DeformableStepReport DeformablePass::Run(const Pass& pass, const core::PassParam
   settings.anchors.equidistribution = msp_.equidistribution;
   settings.anchors.equidistribution_iterations = msp_.equidistribution_iterations;
   settings.cost = core::DefaultDeformableParams();
+  if (msp_.disassemble_clustering) {
+    settings.anchors.max_anchors = core::kMaxKeptAnchors;
+    settings.cost.disassemble_clustering = true;
+    settings.cost.clusters =
+        core::ClusterParams{msp_.dbscan_eta, static_cast<float>(msp_.dbscan_gamma)};
+  }
   ConfineAnchors(state->edges, maps, &settings);
   report.sweeps =
       RunDeformableCheckerboardIterations(params, maps, settings, pass.iterations, num_threads_,

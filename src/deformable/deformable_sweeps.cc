@@ -23,14 +23,15 @@ constexpr uint32_t kAnchorSeedSalt = 0xA5C1D3E7u;
 static_assert(core::kMaxAnchors <= core::kMaxPriorAnchors,
               "every anchor of a pixel fits the prior's anchor subsets");
 
-// Pixel p's anchors as the segmentation prior reads them.
+// Pixel p's anchors as the segmentation prior reads them: APD's anchors (the
+// first kMaxAnchors), also when disassemble-clustering keeps more.
 core::PriorAnchors ToPriorAnchors(const core::Camera& cam, const core::AnchorSet& set,
                                   const float* depth, int width, int col, int row) {
   core::PriorAnchors out;
   out.col = col;
   out.row = row;
-  out.count = set.count;
-  for (int k = 0; k < set.count; ++k) {
+  out.count = set.count < core::kMaxAnchors ? set.count : core::kMaxAnchors;
+  for (int k = 0; k < out.count; ++k) {
     out.cols[k] = set.cols[k];
     out.rows[k] = set.rows[k];
     out.points[k] =
@@ -171,20 +172,28 @@ DeformableStats RunDeformableCheckerboardIterations(
       // pixels share most of their anchors.
       constexpr int kRowsPerTask = 8;
       ParallelFor(0, (height + kRowsPerTask - 1) / kRowsPerTask, num_threads, [&](int task) {
-        AnchorPairCache* cache = caches.Acquire();
-        const CachedAnchorSums anchor_sums(params, planes, settings.cost, cache);
         const int end = std::min(height, (task + 1) * kRowsPerTask);
-        for (int row = task * kRowsPerTask; row < end; ++row) {
-          for (int col = (row + color) & 1; col < width; col += 2) {
-            const int k = slot[row * width + col];
-            if (k >= 0 && anchors[k].count > 0) {
-              core::DeformableUpdatePixel(params, col, row, iteration, anchors[k], planes,
-                                          settings.cost, anchor_sums);
-            } else {
-              core::UpdatePixel(params, col, row, iteration);
+        auto rows = [&](const auto& anchor_sums) {
+          for (int row = task * kRowsPerTask; row < end; ++row) {
+            for (int col = (row + color) & 1; col < width; col += 2) {
+              const int k = slot[row * width + col];
+              if (k >= 0 && anchors[k].count > 0) {
+                core::DeformableUpdatePixel(params, col, row, iteration, anchors[k], planes,
+                                            settings.cost, anchor_sums);
+              } else {
+                core::UpdatePixel(params, col, row, iteration);
+              }
             }
           }
+        };
+        // A cluster's lane is no one anchor's window: the shared pairs, keyed
+        // by anchor, do not apply.
+        if (settings.cost.disassemble_clustering) {
+          rows(core::DirectAnchorSums{params, settings.cost});
+          return;
         }
+        AnchorPairCache* cache = caches.Acquire();
+        rows(CachedAnchorSums(params, planes, settings.cost, cache));
         caches.Release(cache);
       });
     }

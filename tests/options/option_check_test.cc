@@ -193,6 +193,8 @@ TEST(OptionCheck, SegmentationPriorRules) {
       {"MspStereo.crf_unary_confidence", "1", "(0, 1)",
        [](auto* o) { o->msp.crf_unary_confidence = 1; }},
       {"MspStereo.crf_iterations", "0", "> 0", [](auto* o) { o->msp.crf_iterations = 0; }},
+      {"MspStereo.dbscan_eta", "32", "[0, 31]", [](auto* o) { o->msp.dbscan_eta = 32; }},
+      {"MspStereo.dbscan_gamma", "-1", ">= 0", [](auto* o) { o->msp.dbscan_gamma = -1; }},
   };
   for (const BadCase& c : cases) {
     StereoCommandOptions o = Valid();

@@ -67,7 +67,10 @@ const std::vector<std::string> kMspFields = {"backend",
                                              "crf_alpha",
                                              "crf_beta",
                                              "crf_unary_confidence",
-                                             "crf_iterations"};
+                                             "crf_iterations",
+                                             "disassemble_clustering",
+                                             "dbscan_eta",
+                                             "dbscan_gamma"};
 const std::vector<std::string> kTopLevel = {
     "workspace_path", "workspace_format", "pmvs_option_name", "config_path",
     "project_path",   "random_seed",      "log_to_stderr",    "log_level"};

@@ -40,6 +40,33 @@ struct AnchorWindows {
   float value[kMaxAnchorWindowSamples][kMaxAnchors];
 };
 
+// Lane a's reference values at its samples w->x[k][a], w->y[k][a] (whole
+// pixels), centred and scaled to unit norm when the lane is `inside` the
+// reference; an outside lane keeps values 0 and is not fast.
+MSP_HD void NormaliseAnchorLane(const ImageView& ref, int a, bool inside, AnchorWindows* w) {
+  float sum = 0.0f;
+  for (int k = 0; k < w->num_samples; ++k) {
+    w->value[k][a] =
+        inside ? ref.At(static_cast<int>(w->x[k][a]), static_cast<int>(w->y[k][a])) : 0.0f;
+    sum += w->value[k][a];
+  }
+  if (!inside) return;
+  const float mean = sum / w->num_samples;
+  float sum_sq = 0.0f;
+  for (int k = 0; k < w->num_samples; ++k) {
+    w->value[k][a] -= mean;
+    sum_sq += w->value[k][a] * w->value[k][a];
+  }
+  w->fast |= 1u << a;
+  w->spread[a] = sum_sq;
+  const bool textured = sum_sq / w->num_samples >= kMinNccVariance;
+  if (textured) w->textured |= 1u << a;
+  const float inv_norm = textured ? 1.0f / sqrtf(sum_sq) : 0.0f;
+  for (int k = 0; k < w->num_samples; ++k) w->value[k][a] *= inv_norm;
+}
+
+// APD's anchor windows: lane a is the square window of `radius` and `step`
+// around anchor a.
 MSP_HD void PrepareAnchorWindows(const ImageView& ref, const int* cols, const int* rows, int count,
                                  int radius, int step, AnchorWindows* w) {
   w->count = count < kMaxAnchors ? count : kMaxAnchors;
@@ -56,29 +83,57 @@ MSP_HD void PrepareAnchorWindows(const ImageView& ref, const int* cols, const in
     const bool inside = used && w->num_samples > 0 && cols[a] - radius >= 0 &&
                         rows[a] - radius >= 0 && cols[a] + radius < ref.width &&
                         rows[a] + radius < ref.height;
-    float sum = 0.0f;
     int k = 0;
     for (int oy = -radius; oy <= radius && w->num_samples > 0; oy += step) {
       for (int ox = -radius; ox <= radius; ox += step, ++k) {
         w->x[k][a] = inside ? static_cast<float>(cols[a] + ox) : 0.0f;
         w->y[k][a] = inside ? static_cast<float>(rows[a] + oy) : 0.0f;
-        w->value[k][a] = inside ? ref.At(cols[a] + ox, rows[a] + oy) : 0.0f;
-        sum += w->value[k][a];
       }
     }
-    if (!inside) continue;
-    const float mean = sum / w->num_samples;
-    float sum_sq = 0.0f;
-    for (k = 0; k < w->num_samples; ++k) {
-      w->value[k][a] -= mean;
-      sum_sq += w->value[k][a] * w->value[k][a];
+    NormaliseAnchorLane(ref, a, inside, w);
+  }
+}
+
+// Sample pixels chosen lane by lane (disassemble-clustering: a lane holds
+// the sub-patches of one anchor cluster). (col, row) is the lane's point
+// for the rule that a partial window whose point leaves the source costs
+// kMaxCost (AnchorWindowCost).
+struct LaneSamples {
+  int count;        // lanes in use
+  int num_samples;  // per lane, at most kMaxAnchorWindowSamples
+  int col[kMaxAnchors];
+  int row[kMaxAnchors];
+  int x[kMaxAnchorWindowSamples][kMaxAnchors];
+  int y[kMaxAnchorWindowSamples][kMaxAnchors];
+};
+
+// The windows of explicit samples. A lane with a sample outside the
+// reference is not fast, and would be scored as APD's square window of
+// `radius` and `step` (anchor NccParams) around its point: samples are
+// meant to lie inside.
+MSP_HD void PrepareAnchorWindows(const ImageView& ref, const LaneSamples& samples, int radius,
+                                 AnchorWindows* w) {
+  w->count = samples.count < kMaxAnchors ? samples.count : kMaxAnchors;
+  w->radius = radius;
+  w->fast = 0u;
+  w->textured = 0u;
+  w->num_samples =
+      samples.num_samples <= kMaxAnchorWindowSamples ? samples.num_samples : kMaxAnchorWindowSamples;
+  for (int a = 0; a < kMaxAnchors; ++a) {
+    const bool used = a < w->count;
+    w->spread[a] = 0.0f;
+    w->col[a] = used ? samples.col[a] : 0;
+    w->row[a] = used ? samples.row[a] : 0;
+    bool inside = used && w->num_samples > 0;
+    for (int k = 0; k < w->num_samples && inside; ++k) {
+      inside = samples.x[k][a] >= 0 && samples.y[k][a] >= 0 && samples.x[k][a] < ref.width &&
+               samples.y[k][a] < ref.height;
     }
-    w->fast |= 1u << a;
-    w->spread[a] = sum_sq;
-    const bool textured = sum_sq / w->num_samples >= kMinNccVariance;
-    if (textured) w->textured |= 1u << a;
-    const float inv_norm = textured ? 1.0f / sqrtf(sum_sq) : 0.0f;
-    for (k = 0; k < w->num_samples; ++k) w->value[k][a] *= inv_norm;
+    for (int k = 0; k < w->num_samples; ++k) {
+      w->x[k][a] = inside ? static_cast<float>(samples.x[k][a]) : 0.0f;
+      w->y[k][a] = inside ? static_cast<float>(samples.y[k][a]) : 0.0f;
+    }
+    NormaliseAnchorLane(ref, a, inside, w);
   }
 }
 

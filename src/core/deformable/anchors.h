@@ -51,14 +51,19 @@ struct AnchorParams {
   // pixel before the rays are cast; false = the fixed 45-degree sectors.
   bool equidistribution = false;
   int equidistribution_iterations = kDefaultEquidistributionIterations;  // 1..3
+  // Inliers kept as anchors, closest to the plane first: kMaxAnchors (APD),
+  // or every inlier (kMaxKeptAnchors) for disassemble-clustering.
+  int max_anchors = kMaxAnchors;
 };
 
 // The anchors of one pixel and the RANSAC plane n^T X + plane_dist = 0
 // (reference camera frame, n unit and facing the camera at p).
+// The anchors are sorted by distance to the plane, so the first kMaxAnchors
+// are APD's anchors whatever AnchorParams::max_anchors kept.
 struct AnchorSet {
   int count;  // 0 when the search failed (the pixel is then matched conventionally)
-  int cols[kMaxAnchors];
-  int rows[kMaxAnchors];
+  int cols[kMaxKeptAnchors];
+  int rows[kMaxKeptAnchors];
   Vec3 plane_normal;
   float plane_dist;
   int num_sectors;  // sectors with at least one hit
@@ -266,14 +271,17 @@ MSP_HD bool FitAnchors(const Camera& cam, const AnchorMaps& maps, int col, int r
   }
   out->plane_normal = best_normal;
   out->plane_dist = best_dist;
-  // The inliers closest to the plane become the anchors (selection by distance).
+  // The inliers closest to the plane become the anchors (selection by
+  // distance), up to params.max_anchors of them.
   constexpr float kNotAnInlier = 1e30f;  // outliers, and inliers already taken
   float error[kMaxAnchorHits];
   for (int k = 0; k < n; ++k) {
     const float e = fabsf(Dot(best_normal, points[k]) + best_dist);
     error[k] = e <= params.inlier_threshold ? e : kNotAnInlier;
   }
-  while (out->count < kMaxAnchors) {
+  const int max_anchors = params.max_anchors < kMaxKeptAnchors ? params.max_anchors
+                                                                : kMaxKeptAnchors;
+  while (out->count < max_anchors) {
     int pick = 0;  // the first smallest error, branch-free
     for (int k = 1; k < n; ++k) {
       const bool smaller = error[k] < error[pick];

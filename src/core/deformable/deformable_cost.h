@@ -5,6 +5,7 @@
 // of the same surface while keeping p's hypothesis.
 #pragma once
 
+#include "core/deformable/anchor_clusters.h"
 #include "core/deformable/anchor_windows.h"
 #include "core/deformable/anchors.h"
 #include "core/math/hd.h"
@@ -23,6 +24,10 @@ struct DeformableParams {
   float lambda;              // weight of the centre window
   int anchor_window_radius;  // W_s: offsets -r, -r + step, ..., r around the anchor
   int anchor_window_step;
+  // Disassemble-clustering (anchor_clusters.h): the lanes are DBSCAN clusters
+  // of every kept anchor; false = APD's eight anchor windows.
+  bool disassemble_clustering = false;
+  ClusterParams clusters = DefaultClusterParams();
 };
 
 MSP_HD DeformableParams DefaultDeformableParams() {
@@ -47,12 +52,34 @@ struct DeformableWindows {
   AnchorWindows anchors;
 };
 
+// The anchor clusters of pixel (col, row) as the lanes of its patch: DBSCAN
+// clusters with disassemble-clustering, else every anchor on its own.
+MSP_HD void PatchClusters(const AnchorSet& anchors, int col, int row, const DeformableParams& d,
+                          AnchorClusters* clusters) {
+  if (d.disassemble_clustering) {
+    ClusterAnchors(anchors, col, row, d.clusters, clusters);
+  } else {
+    SingletonClusters(anchors, clusters);
+  }
+}
+
+// The windows on the fixed sampling grid: APD's anchor windows, or with
+// disassemble-clustering the clusters' sub-patches (GridClusterSamples).
 MSP_HD void PrepareDeformableWindows(const PassParams& p, int col, int row,
                                      const AnchorSet& anchors, const DeformableParams& d,
                                      DeformableWindows* w) {
   PrepareWindow(p, col, row, &w->centre);
-  PrepareAnchorWindows(p.ref_image, anchors.cols, anchors.rows, anchors.count,
-                       d.anchor_window_radius, d.anchor_window_step, &w->anchors);
+  if (!d.disassemble_clustering) {
+    PrepareAnchorWindows(p.ref_image, anchors.cols, anchors.rows, anchors.count,
+                         d.anchor_window_radius, d.anchor_window_step, &w->anchors);
+    return;
+  }
+  AnchorClusters clusters;
+  ClusterAnchors(anchors, col, row, d.clusters, &clusters);
+  LaneSamples samples;
+  GridClusterSamples(anchors, clusters, d.anchor_window_radius, p.ref_image.width,
+                     p.ref_image.height, &samples);
+  PrepareAnchorWindows(p.ref_image, samples, d.anchor_window_radius, &w->anchors);
 }
 
 // The photometric part of the deformable cost from the centre window's NCC

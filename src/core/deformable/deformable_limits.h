@@ -23,8 +23,11 @@ constexpr int kCurveSamples = 2 * kCurveHalfWidth + 1;
 constexpr int kNumSectors = 8;
 constexpr int kMaxRaysPerSector = 4;
 constexpr int kMaxAnchorHits = kNumSectors * kMaxRaysPerSector;
-// The deformable patch uses the 8 inliers closest to the RANSAC plane.
+// The deformable patch uses the 8 inliers closest to the RANSAC plane: one
+// vector lane each. With disassemble-clustering every inlier is kept (up to
+// one per ray hit) and the lanes are anchor clusters, at most kMaxAnchors.
 constexpr int kMaxAnchors = 8;
+constexpr int kMaxKeptAnchors = kMaxAnchorHits;
 
 static_assert(kMaxAnchors <= kMaxAnchorHits, "anchors are chosen among the ray hits");
 

@@ -289,6 +289,40 @@ TEST(Anchors, HitsCastOnceRefitOnNewDepths) {
   EXPECT_FALSE(HitsStillValid(layout.Maps(), hits));
 }
 
+// Disassemble-clustering keeps every inlier: APD's anchors first (the same
+// RANSAC draws give the same plane), then the other inliers, all sorted by
+// distance to the plane and all within the threshold.
+TEST(Anchors, EveryInlierKeptWithApdsAnchorsFirst) {
+  Layout layout;
+  layout.Fill(OutsideDisk);
+  AnchorParams params = DefaultAnchorParams(2, kDepthRange, kMaxDistance);
+  AnchorHits hits;
+  CastAnchorHits(layout.Maps(), kCol, kRow, params, &hits);
+  AnchorSet apd, all;
+  Rng rng = MakeRng(7);
+  ASSERT_TRUE(FitAnchors(layout.cam, layout.Maps(), kCol, kRow, params, hits, &rng, &apd));
+  params.max_anchors = kMaxKeptAnchors;
+  rng = MakeRng(7);
+  ASSERT_TRUE(FitAnchors(layout.cam, layout.Maps(), kCol, kRow, params, hits, &rng, &all));
+  ASSERT_EQ(apd.count, kMaxAnchors);
+  EXPECT_EQ(all.count, all.num_inliers);
+  EXPECT_GT(all.count, 3 * kMaxAnchors);  // every ray of this layout hits the plane
+  for (int k = 0; k < kMaxAnchors; ++k) {
+    EXPECT_EQ(all.cols[k], apd.cols[k]) << k;
+    EXPECT_EQ(all.rows[k], apd.rows[k]) << k;
+  }
+  float previous = 0.0f;
+  for (int k = 0; k < all.count; ++k) {
+    const int q = all.rows[k] * kSize + all.cols[k];
+    const Vec3 X = BackProject(layout.cam, static_cast<float>(all.cols[k]),
+                               static_cast<float>(all.rows[k]), layout.depth[q]);
+    const float e = std::fabs(Dot(all.plane_normal, X) + all.plane_dist);
+    EXPECT_LE(e, params.inlier_threshold);
+    EXPECT_GE(e, previous);
+    previous = e;
+  }
+}
+
 // The nearest-edge map only skips walks that cannot reach an edge: on random
 // reliable pixels and random edge segments, every pixel's confined hits are
 // the same with it as without it, and some hits were confined away.

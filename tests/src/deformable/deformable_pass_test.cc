@@ -267,5 +267,56 @@ TEST(DeformablePass, OnlyConfiningEdgesConfineTheAnchors) {
   EXPECT_EQ(anchored[2], anchored[0]);
 }
 
+// The maps of two states, bit for bit.
+void ExpectSameState(const PixelState& a, const PixelState& b) {
+  EXPECT_EQ(a.depth, b.depth);
+  EXPECT_EQ(a.normal, b.normal);
+  EXPECT_EQ(a.cost, b.cost);
+  EXPECT_EQ(a.mask, b.mask);
+}
+
+// A deformable step from random planes with the block unreliable, run by
+// DeformablePass with the options `msp`.
+void RunFromRandomPlanes(const MspStereoOptions& msp, Scene* s) {
+  InitializeState(s->params, kNumThreads);
+  s->state.classes = BlockClasses();
+  DeformablePass step(msp, kNumThreads);
+  const DeformableStepReport report = step.Run(DeformablePassWithClasses(), s->params, &s->state);
+  EXPECT_GT(report.sweeps.anchored_updates, 0);
+}
+
+// Switched off, disassemble-clustering leaves APD's step as it was: the
+// settings of the APD baseline given to the iterations directly.
+TEST(DeformablePass, DisassembleClusteringOffIsApdsStep) {
+  MspStereoOptions msp;
+  msp.disassemble_clustering = false;
+  Scene off, apd, on;
+  RunFromRandomPlanes(msp, &off);
+  InitializeState(apd.params, kNumThreads);
+  DeformableSettings settings;
+  settings.anchors = core::DefaultAnchorParams(0, apd.params.depth_max - apd.params.depth_min,
+                                               msp.anchor_max_distance);
+  settings.cost = core::DefaultDeformableParams();
+  const ReliabilityMaps maps = MakeReliabilityMaps(BlockClasses(), kWidth, kHeight, kNumThreads);
+  DeformableBuffers buffers;
+  RunDeformableCheckerboardIterations(apd.params, maps, settings,
+                                      DeformablePassWithClasses().iterations, kNumThreads,
+                                      &buffers);
+  ExpectSameState(off.state, apd.state);
+  // Switched on, the clusters' costs choose other planes somewhere.
+  RunFromRandomPlanes(MspStereoOptions(), &on);
+  EXPECT_NE(on.state.depth, off.state.depth);
+}
+
+// Other DBSCAN parameters make other clusters, hence other costs.
+TEST(DeformablePass, DbscanParametersChangeTheClusters) {
+  Scene automatic, wide;
+  RunFromRandomPlanes(MspStereoOptions(), &automatic);
+  MspStereoOptions msp;
+  msp.dbscan_gamma = 40.0;  // one cluster of most anchors
+  RunFromRandomPlanes(msp, &wide);
+  EXPECT_NE(automatic.state.depth, wide.state.depth);
+}
+
 }  // namespace
 }  // namespace msp

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/deformable/anchors.h"
+#include "core/deformable/synergistic_optimization.h"
 #include "core/prior/prior_limits.h"
 #include "options/option_name.h"
 
@@ -143,6 +144,14 @@ void CheckMspStereoOptions(const MspStereoOptions& o) {
   MSP_CHECK_POSITIVE(o, crf_iterations);
   MSP_CHECK_RANGE(o, dbscan_eta, 0, core::kMaxKeptAnchors - 1);
   MSP_CHECK_NON_NEGATIVE(o, dbscan_gamma);
+  MSP_CHECK_RANGE(o, sampling_solutions, 1, core::kMaxSamplingSolutions);
+  MSP_CHECK_RANGE(o, disparity_samples, 1, core::kMaxDisparitySamples);
+  if (o.disparity_samples % 2 == 0) {
+    Fail(MSP_OPTION_NAME(o, disparity_samples), ToText(o.disparity_samples),
+         "odd (the profile is centred on the current disparity)");
+  }
+  MSP_CHECK_POSITIVE(o, disparity_step);
+  MSP_CHECK_NON_NEGATIVE(o, variance_weight);
 }
 
 void CheckStereoCommandOptions(const StereoCommandOptions& o) {

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/deformable/deformable_limits.h"
+#include "core/deformable/synergistic_optimization.h"
 #include "core/prior/prior_limits.h"
 #include "options/command_line_common.h"
 #include "options/option_name.h"
@@ -280,6 +281,27 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
   MSP_ADD_OPTION(t, *m, dbscan_gamma,
                  "[0, inf). DBSCAN gamma: neighbourhood radius in pixels of the current round; 0 "
                  "= automatic, max(3, 0.25 x the median distance of the anchors to the pixel).");
+  MSP_ADD_OPTION(t, *m, synergistic_optimization,
+                 "Disparity-sampling synergistic 3D optimization (eqs. 8-9): the deformable "
+                 "patch's sampling pixels lie at random in its sub-patches; once per deformable "
+                 "pass each pixel draws " +
+                     MSP_OPTION_FLAG(*m, sampling_solutions) +
+                     " new solutions, keeps the one whose cost profile over " +
+                     MSP_OPTION_FLAG(*m, disparity_samples) +
+                     " disparities minimises eq. 9 and tries that profile's best depth; false = "
+                     "the fixed sampling grid (w/o Syn.).");
+  MSP_ADD_OPTION(t, *m, sampling_solutions,
+                 "[1, " + std::to_string(core::kMaxSamplingSolutions) +
+                     "]. J: sampling solutions drawn per optimization.");
+  MSP_ADD_OPTION(t, *m, disparity_samples,
+                 "{1, 3, 5, 7}. mu: disparities of a cost profile (eq. 8).");
+  MSP_ADD_OPTION(t, *m, disparity_step,
+                 "(0, inf). delta: step between the profile's disparities in pixels (eq. 8).");
+  MSP_ADD_OPTION(t, *m, variance_weight,
+                 "[0, inf). omega: weight of the variance term of eq. 9; 0 = w/o Var.");
+  MSP_ADD_OPTION(t, *m, profile_cost_term,
+                 "Eq. 9 with the sum of the profile's costs; false = the variance term alone "
+                 "(w/o Cst.).");
 }
 
 // The one list of options: the top-level ones, then each section's.

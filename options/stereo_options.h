@@ -158,6 +158,19 @@ struct MspStereoOptions {
   int dbscan_eta = 2;
   // DBSCAN gamma in pixels of the current round; 0 = max(3, 0.25 x median anchor distance to p).
   double dbscan_gamma = 0.0;
+  // Disparity-sampling synergistic 3D optimization (docs/method.md section 7): the sampling pixels
+  // of the deformable patch's sub-patches at random, the best of several solutions by eq. 9.
+  bool synergistic_optimization = true;
+  // J: sampling solutions drawn per optimization (the one in use competes with them).
+  int sampling_solutions = 6;
+  // mu: disparities of a cost profile (odd).
+  int disparity_samples = 5;
+  // delta: step between the profile's disparities, in pixels of disparity.
+  double disparity_step = 1.0;
+  // omega: weight of eq. 9's variance term sum (c_i - c_bar)^-2; 0 = no variance term.
+  double variance_weight = 0.01;
+  // Eq. 9 with the sum of the profile's costs; false = the variance term alone.
+  bool profile_cost_term = true;
 };
 
 // Everything the msp_stereo command needs; top-level options have no section.

@@ -45,6 +45,10 @@ DeformableStepReport DeformablePass::Run(const Pass& pass, const core::PassParam
     settings.cost.clusters =
         core::ClusterParams{msp_.dbscan_eta, static_cast<float>(msp_.dbscan_gamma)};
   }
+  settings.synergistic = msp_.synergistic_optimization;
+  settings.synergy = core::SynergyParams{
+      msp_.sampling_solutions, msp_.disparity_samples, static_cast<float>(msp_.disparity_step),
+      static_cast<float>(msp_.variance_weight), msp_.profile_cost_term};
   ConfineAnchors(state->edges, maps, &settings);
   report.sweeps =
       RunDeformableCheckerboardIterations(params, maps, settings, pass.iterations, num_threads_,

@@ -109,6 +109,8 @@ DeformableStats RunDeformableCheckerboardIterations(
   std::vector<core::AnchorHits>& hits = buffers->hits;
   anchors.resize(num_slots);
   hits.resize(num_slots);
+  std::vector<uint32_t>& solutions = buffers->solutions;
+  if (settings.synergistic) solutions.resize(num_slots);
   std::vector<float>& depth = buffers->depth;
   std::vector<float>& normal = buffers->normal;
   depth.resize(n);  // sized before the views below take their addresses
@@ -141,6 +143,9 @@ DeformableStats RunDeformableCheckerboardIterations(
             core::MakeRng(core::RngKey(params.seed ^ kAnchorSeedSalt, params.image_id,
                                        params.pass_id, iteration, static_cast<uint32_t>(i)));
         core::AnchorHits& cast = hits[slot[i]];
+        if (iteration == 0 && settings.synergistic) {
+          solutions[slot[i]] = core::InitialSamplingSolution(params, static_cast<uint32_t>(i));
+        }
         if (iteration == 0 || !core::HitsStillValid(anchor_maps, cast)) {
           core::CastAnchorHits(anchor_maps, col, row, settings.anchors, &cast);
         }
@@ -173,22 +178,26 @@ DeformableStats RunDeformableCheckerboardIterations(
       constexpr int kRowsPerTask = 8;
       ParallelFor(0, (height + kRowsPerTask - 1) / kRowsPerTask, num_threads, [&](int task) {
         const int end = std::min(height, (task + 1) * kRowsPerTask);
+        core::PixelSampling sampling;
+        sampling.optimize = iteration < settings.synergy_iterations;
+        sampling.params = settings.synergy;
         auto rows = [&](const auto& anchor_sums) {
           for (int row = task * kRowsPerTask; row < end; ++row) {
             for (int col = (row + color) & 1; col < width; col += 2) {
               const int k = slot[row * width + col];
               if (k >= 0 && anchors[k].count > 0) {
+                sampling.solution = settings.synergistic ? &solutions[k] : nullptr;
                 core::DeformableUpdatePixel(params, col, row, iteration, anchors[k], planes,
-                                            settings.cost, anchor_sums);
+                                            settings.cost, anchor_sums, sampling);
               } else {
                 core::UpdatePixel(params, col, row, iteration);
               }
             }
           }
         };
-        // A cluster's lane is no one anchor's window: the shared pairs, keyed
-        // by anchor, do not apply.
-        if (settings.cost.disassemble_clustering) {
+        // A cluster's lane, or a lane of sampled pixels, is no anchor's
+        // fixed window: the shared pairs, keyed by anchor, do not apply.
+        if (settings.cost.disassemble_clustering || settings.synergistic) {
           rows(core::DirectAnchorSums{params, settings.cost});
           return;
         }

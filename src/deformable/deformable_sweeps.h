@@ -12,6 +12,7 @@
 #include "core/deformable/anchors.h"
 #include "core/deformable/deformable_cost.h"
 #include "core/deformable/reliability.h"
+#include "core/deformable/synergistic_optimization.h"
 #include "core/patch_match/patch_match_kernel.h"
 #include "core/prior/best_layer.h"
 #include "deformable/anchor_pair_cache.h"
@@ -53,6 +54,12 @@ struct DeformableSettings {
   // The nearest edge pixel of every pixel (NearestMarkedPixels of the edges),
   // or nullptr: lets the search skip walks that cannot reach an edge.
   const int* nearest_edge = nullptr;
+  // Disparity-sampling synergistic 3D optimization (core/deformable/
+  // synergistic_optimization.h): random sampling solutions, optimized in
+  // the first `synergy_iterations` iterations of the pass; false = the fixed grid.
+  bool synergistic = false;
+  core::SynergyParams synergy = core::DefaultSynergyParams();
+  int synergy_iterations = 1;
 };
 
 // Statistics of one call, for the log.
@@ -71,6 +78,7 @@ struct DeformableBuffers {
   std::vector<int> slot;  // pixel -> its entry in anchors and hits, -1 = none
   std::vector<core::AnchorSet> anchors;
   std::vector<core::AnchorHits> hits;
+  std::vector<uint32_t> solutions;  // each anchored pixel's sampling solution
   std::vector<float> depth, normal;  // the iteration's snapshot of the planes
   std::vector<int> row_start;        // first entry of each row in the prior's anchors
   std::unique_ptr<AnchorPairCachePool> caches;

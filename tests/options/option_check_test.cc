@@ -195,6 +195,12 @@ TEST(OptionCheck, SegmentationPriorRules) {
       {"MspStereo.crf_iterations", "0", "> 0", [](auto* o) { o->msp.crf_iterations = 0; }},
       {"MspStereo.dbscan_eta", "32", "[0, 31]", [](auto* o) { o->msp.dbscan_eta = 32; }},
       {"MspStereo.dbscan_gamma", "-1", ">= 0", [](auto* o) { o->msp.dbscan_gamma = -1; }},
+      {"MspStereo.sampling_solutions", "0", "[1, 32]",
+       [](auto* o) { o->msp.sampling_solutions = 0; }},
+      {"MspStereo.disparity_samples", "9", "[1, 7]", [](auto* o) { o->msp.disparity_samples = 9; }},
+      {"MspStereo.disparity_samples", "4", "odd", [](auto* o) { o->msp.disparity_samples = 4; }},
+      {"MspStereo.disparity_step", "0", "> 0", [](auto* o) { o->msp.disparity_step = 0; }},
+      {"MspStereo.variance_weight", "-1", ">= 0", [](auto* o) { o->msp.variance_weight = -1; }},
   };
   for (const BadCase& c : cases) {
     StereoCommandOptions o = Valid();

@@ -70,7 +70,13 @@ const std::vector<std::string> kMspFields = {"backend",
                                              "crf_iterations",
                                              "disassemble_clustering",
                                              "dbscan_eta",
-                                             "dbscan_gamma"};
+                                             "dbscan_gamma",
+                                             "synergistic_optimization",
+                                             "sampling_solutions",
+                                             "disparity_samples",
+                                             "disparity_step",
+                                             "variance_weight",
+                                             "profile_cost_term"};
 const std::vector<std::string> kTopLevel = {
     "workspace_path", "workspace_format", "pmvs_option_name", "config_path",
     "project_path",   "random_seed",      "log_to_stderr",    "log_level"};

@@ -12,6 +12,7 @@
 #include "core/deformable/anchors.h"
 #include "core/deformable/deformable_cost.h"
 #include "core/deformable/deformable_limits.h"
+#include "core/deformable/synergistic_optimization.h"
 #include "core/math/hd.h"
 #include "core/patch_match/patch_match_kernel.h"
 
@@ -61,11 +62,14 @@ MSP_HD void Compete(const PassParams& p, const DeformableWindows& w, const Plane
 
 // Falls back to the conventional update when no candidate is usable. The
 // anchors' candidates take their anchor windows' sums from `anchor_sums`
-// (DeformableCandidateViewCosts).
+// (DeformableCandidateViewCosts). With a sampling solution (PixelSampling)
+// the lanes sample it, after the 3D optimization when that runs, whose
+// candidate competes after the RANSAC and current planes.
 template <typename AnchorSumsFn>
 MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int iteration,
                                   const AnchorSet& anchors, const PlaneMapView& planes,
-                                  const DeformableParams& d, const AnchorSumsFn& anchor_sums) {
+                                  const DeformableParams& d, const AnchorSumsFn& anchor_sums,
+                                  const PixelSampling& sampling = PixelSampling{}) {
   const PixelStateView& s = p.state;
   const int i = s.Index(col, row);
   const uint32_t pixel = static_cast<uint32_t>(i);
@@ -97,7 +101,21 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
     return;
   }
   DeformableWindows windows;
-  PrepareDeformableWindows(p, col, row, anchors, d, &windows);
+  PlaneHypothesis sampled;
+  bool has_sampled = false;
+  if (sampling.solution == nullptr) {
+    PrepareDeformableWindows(p, col, row, anchors, d, &windows);
+  } else {
+    PrepareWindow(p, col, row, &windows.centre);
+    AnchorClusters clusters;
+    PatchClusters(anchors, col, row, d, &clusters);
+    if (sampling.optimize) {
+      has_sampled = OptimizeSampling(p, col, row, iteration, windows.centre, anchors, clusters, d,
+                                     sampling.params, sampling.solution, &sampled) &&
+                    UsableCandidate(p, col, row, sampled);
+    }
+    PrepareSampledWindows(p, anchors, clusters, d, *sampling.solution, &windows.anchors);
+  }
   // The anchors' candidates in every view: view selection reads them all.
   DeformableCandidateViewCosts(p, windows, cand, has, fit, d, anchor_sums, costs, conventional);
   Rng select_rng =
@@ -124,6 +142,7 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
   for (int k = fit; k <= current; ++k) {
     if (has[k]) Compete(p, windows, cand[k], d, weights, &winner);
   }
+  if (has_sampled) Compete(p, windows, sampled, d, weights, &winner);
   Rng refine_rng =
       MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamRefine, pixel));
   for (int k = 0; k < kNumRefinementCandidates; ++k) {

@@ -275,10 +275,17 @@ void ExpectSameState(const PixelState& a, const PixelState& b) {
   EXPECT_EQ(a.mask, b.mask);
 }
 
+// Random planes, every source view selected (as a previous pass leaves
+// some selected).
+void RandomPlanes(Scene* s) {
+  InitializeState(s->params, kNumThreads);
+  for (uint32_t& m : s->state.mask) m = (1u << s->params.num_src) - 1u;
+}
+
 // A deformable step from random planes with the block unreliable, run by
 // DeformablePass with the options `msp`.
 void RunFromRandomPlanes(const MspStereoOptions& msp, Scene* s) {
-  InitializeState(s->params, kNumThreads);
+  RandomPlanes(s);
   s->state.classes = BlockClasses();
   DeformablePass step(msp, kNumThreads);
   const DeformableStepReport report = step.Run(DeformablePassWithClasses(), s->params, &s->state);
@@ -290,9 +297,10 @@ void RunFromRandomPlanes(const MspStereoOptions& msp, Scene* s) {
 TEST(DeformablePass, DisassembleClusteringOffIsApdsStep) {
   MspStereoOptions msp;
   msp.disassemble_clustering = false;
+  msp.synergistic_optimization = false;
   Scene off, apd, on;
   RunFromRandomPlanes(msp, &off);
-  InitializeState(apd.params, kNumThreads);
+  RandomPlanes(&apd);
   DeformableSettings settings;
   settings.anchors = core::DefaultAnchorParams(0, apd.params.depth_max - apd.params.depth_min,
                                                msp.anchor_max_distance);
@@ -304,8 +312,50 @@ TEST(DeformablePass, DisassembleClusteringOffIsApdsStep) {
                                       &buffers);
   ExpectSameState(off.state, apd.state);
   // Switched on, the clusters' costs choose other planes somewhere.
+  msp.disassemble_clustering = true;
+  RunFromRandomPlanes(msp, &on);
+  EXPECT_NE(on.state.depth, off.state.depth);
+}
+
+// Switched off, the synergistic optimization leaves disassemble-clustering
+// alone: the settings without the optimization given to the iterations.
+TEST(DeformablePass, SynergisticOptimizationOffIsClusteringAlone) {
+  MspStereoOptions msp;
+  msp.synergistic_optimization = false;
+  Scene off, clustering, on;
+  RunFromRandomPlanes(msp, &off);
+  RandomPlanes(&clustering);
+  DeformableSettings settings;
+  settings.anchors = core::DefaultAnchorParams(
+      0, clustering.params.depth_max - clustering.params.depth_min, msp.anchor_max_distance);
+  settings.anchors.max_anchors = core::kMaxKeptAnchors;
+  settings.cost = core::DefaultDeformableParams();
+  settings.cost.disassemble_clustering = true;
+  const ReliabilityMaps maps = MakeReliabilityMaps(BlockClasses(), kWidth, kHeight, kNumThreads);
+  DeformableBuffers buffers;
+  RunDeformableCheckerboardIterations(clustering.params, maps, settings,
+                                      DeformablePassWithClasses().iterations, kNumThreads,
+                                      &buffers);
+  ExpectSameState(off.state, clustering.state);
   RunFromRandomPlanes(MspStereoOptions(), &on);
   EXPECT_NE(on.state.depth, off.state.depth);
+}
+
+// Each ablation of the optimization (w/o Var., w/o Cst., mu = 3) and the
+// optimization without clustering change the output.
+TEST(DeformablePass, EverySynergySwitchChangesTheOutput) {
+  Scene reference;
+  RunFromRandomPlanes(MspStereoOptions(), &reference);
+  for (int k = 0; k < 4; ++k) {
+    MspStereoOptions msp;
+    if (k == 0) msp.variance_weight = 0.0;
+    if (k == 1) msp.profile_cost_term = false;
+    if (k == 2) msp.disparity_samples = 3;
+    if (k == 3) msp.disassemble_clustering = false;
+    Scene s;
+    RunFromRandomPlanes(msp, &s);
+    EXPECT_NE(s.state.depth, reference.state.depth) << "switch " << k;
+  }
 }
 
 // Other DBSCAN parameters make other clusters, hence other costs.

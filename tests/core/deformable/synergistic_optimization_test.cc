@@ -1,0 +1,160 @@
+#include "core/deformable/synergistic_optimization.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <set>
+#include <utility>
+
+#include "core/patch_match/local_refine.h"
+#include "tests/support/plane_scene.h"
+
+namespace msp {
+namespace core {
+namespace {
+
+SynergyParams Params(float omega, bool cost_term) {
+  SynergyParams sp = DefaultSynergyParams();
+  sp.variance_weight = omega;
+  sp.profile_cost_term = cost_term;
+  return sp;
+}
+
+TEST(SynergisticOptimization, SharpMinimumScoresBelowAFlatProfile) {
+  const float sharp[5] = {0.62f, 0.55f, 0.10f, 0.57f, 0.60f};  // mean 0.488
+  const float flat[5] = {0.49f, 0.48f, 0.47f, 0.48f, 0.49f};   // mean 0.482
+  const SynergyParams with_variance = Params(0.01f, true);
+  EXPECT_LT(ProfileObjective(sharp, 5, with_variance), ProfileObjective(flat, 5, with_variance));
+  // Without the variance term only the sum counts: the flat profile's is lower.
+  const SynergyParams sum_only = Params(0.0f, true);
+  EXPECT_FLOAT_EQ(ProfileObjective(sharp, 5, sum_only), 0.62f + 0.55f + 0.10f + 0.57f + 0.60f);
+  EXPECT_LT(ProfileObjective(flat, 5, sum_only), ProfileObjective(sharp, 5, sum_only));
+  // Without the cost term the variance term alone decides, the same way.
+  const SynergyParams variance_only = Params(0.01f, false);
+  EXPECT_LT(ProfileObjective(sharp, 5, variance_only), ProfileObjective(flat, 5, variance_only));
+  EXPECT_FLOAT_EQ(ProfileObjective(sharp, 5, with_variance),
+                  ProfileObjective(sharp, 5, sum_only) + ProfileObjective(sharp, 5, variance_only));
+}
+
+TEST(SynergisticOptimization, ConstantProfileIsFiniteAtTheFloor) {
+  const float constant[5] = {0.3f, 0.3f, 0.3f, 0.3f, 0.3f};
+  const float f = ProfileObjective(constant, 5, Params(0.01f, true));
+  EXPECT_TRUE(std::isfinite(f));
+  EXPECT_NEAR(f, 1.5f + 0.01f * 5.0f / kMinSquaredDeviation, 1e-3f);
+  const float single[1] = {2.0f};
+  EXPECT_TRUE(std::isfinite(ProfileObjective(single, 1, Params(0.01f, true))));
+}
+
+// A ring of 16 anchors 20 px around (col, row), in pairs 2 px apart.
+AnchorSet PairedRing(int col, int row) {
+  AnchorSet a{};
+  const int offsets[8][2] = {{20, 0},  {14, 14},   {0, 20},  {-14, 14},
+                             {-20, 0}, {-14, -14}, {0, -20}, {14, -14}};
+  for (int k = 0; k < 8; ++k) {
+    for (int m = 0; m < 2; ++m) {
+      a.cols[a.count] = col + offsets[k][0] + 2 * m;
+      a.rows[a.count] = row + offsets[k][1];
+      ++a.count;
+    }
+  }
+  return a;
+}
+
+TEST(SynergisticOptimization, RandomSamplesStayInTheirSubPatches) {
+  const AnchorSet anchors = PairedRing(100, 75);
+  AnchorClusters clusters;
+  ClusterAnchors(anchors, 100, 75, ClusterParams{1, 3.0f}, &clusters);
+  ASSERT_EQ(clusters.count, 8);
+  std::set<std::pair<int, int>> first_lane[2];
+  for (uint32_t seed : {1u, 2u}) {
+    LaneSamples samples;
+    RandomClusterSamples(anchors, clusters, 5, 200, 150, seed, &samples);
+    ASSERT_EQ(samples.num_samples, kClusterLaneSamples);
+    for (int c = 0; c < clusters.count; ++c) {
+      ASSERT_EQ(clusters.size(c), 2);
+      const int h = SubPatchHalfSide(5, 2);
+      int s = 0;
+      for (int m = 0; m < 2; ++m) {
+        const int a = clusters.member[clusters.start[c] + m];
+        std::set<std::pair<int, int>> distinct;
+        const int n = SubPatchSamples(m, 2, kClusterLaneSamples);
+        for (int t = 0; t < n; ++t, ++s) {
+          EXPECT_LE(std::abs(samples.x[s][c] - anchors.cols[a]), h);
+          EXPECT_LE(std::abs(samples.y[s][c] - anchors.rows[a]), h);
+          distinct.insert({samples.x[s][c], samples.y[s][c]});
+          if (c == 0) first_lane[seed - 1].insert({samples.x[s][c], samples.y[s][c]});
+        }
+        EXPECT_EQ(static_cast<int>(distinct.size()), n);  // 25 pixels hold 5 apart
+      }
+    }
+    // A solution is a function of its seed.
+    LaneSamples again;
+    RandomClusterSamples(anchors, clusters, 5, 200, 150, seed, &again);
+    for (int s = 0; s < kClusterLaneSamples; ++s) EXPECT_EQ(again.x[s][3], samples.x[s][3]);
+  }
+  EXPECT_NE(first_lane[0], first_lane[1]);
+}
+
+// The scene of the core tests (a textured plane), p at (kCol, kRow) with its
+// plane moved 2 px of disparity off the truth.
+struct OffsetScene {
+  static constexpr int kCol = 100, kRow = 75;
+  test::PlaneScene s;
+  AnchorSet anchors;
+  AnchorClusters clusters;
+  DeformableParams d = DefaultDeformableParams();
+  RefWindow centre;
+  OffsetScene() {
+    test::MakeScene(4.0f, true, &s);
+    const int i = s.params.state.Index(kCol, kRow);
+    const float fb = s.params.ref_camera.fx * MeanBaseline(s.params, s.state_mask[i]);
+    s.state_depth[i] = DepthAtDisparityOffset(fb, 4.0f, 2.0f);
+    anchors = PairedRing(kCol, kRow);
+    d.disassemble_clustering = true;
+    PatchClusters(anchors, kCol, kRow, d, &clusters);
+    PrepareWindow(s.params, kCol, kRow, &centre);
+  }
+  bool Optimize(const SynergyParams& sp, uint32_t* solution, PlaneHypothesis* candidate) {
+    return OptimizeSampling(s.params, kCol, kRow, 0, centre, anchors, clusters, d, sp, solution,
+                            candidate);
+  }
+};
+
+TEST(SynergisticOptimization, ProfileFindsTheTrueDepthTwoStepsAway) {
+  OffsetScene scene;
+  uint32_t solution = 7u;
+  PlaneHypothesis candidate;
+  ASSERT_TRUE(scene.Optimize(DefaultSynergyParams(), &solution, &candidate));
+  EXPECT_NEAR(candidate.depth, 4.0f, 1e-3f);
+  EXPECT_FLOAT_EQ(candidate.normal.z, -1.0f);
+  // Run again in the same iteration, the chosen solution beats the same
+  // drawn ones again and stays.
+  const uint32_t chosen = solution;
+  ASSERT_TRUE(scene.Optimize(DefaultSynergyParams(), &solution, &candidate));
+  EXPECT_EQ(solution, chosen);
+  // With mu = 3 the truth lies outside the profile: its best depth is the
+  // nearer end, one step towards the truth.
+  SynergyParams three = DefaultSynergyParams();
+  three.disparity_samples = 3;
+  PlaneHypothesis near_end;
+  ASSERT_TRUE(scene.Optimize(three, &solution, &near_end));
+  const int i = scene.s.params.state.Index(OffsetScene::kCol, OffsetScene::kRow);
+  EXPECT_LT(std::fabs(near_end.depth - 4.0f), std::fabs(scene.s.state_depth[i] - 4.0f));
+  EXPECT_GT(std::fabs(near_end.depth - 4.0f), 1e-3f);
+}
+
+TEST(SynergisticOptimization, AnObjectiveOfZeroKeepsTheSolutionInUse) {
+  OffsetScene scene;
+  uint32_t solution = 7u;
+  PlaneHypothesis candidate;
+  scene.Optimize(Params(0.0f, false), &solution, &candidate);
+  EXPECT_EQ(solution, 7u);
+  // With an objective, some drawn solution beats an arbitrary one.
+  scene.Optimize(DefaultSynergyParams(), &solution, &candidate);
+  EXPECT_NE(solution, 7u);
+}
+
+}  // namespace
+}  // namespace core
+}  // namespace msp

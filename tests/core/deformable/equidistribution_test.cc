@@ -293,6 +293,31 @@ TEST(Equidistribution, SectorsClosedByAnEdgeGetNoWidth) {
   EXPECT_EQ(wide, 1);
 }
 
+// Reliable pixels from 20 px on, and radial depth edges from 12 px out along
+// the directions `walls` (degrees), up to 2 px either side: a ray along a
+// wall stops on it at once, rays between the walls reach the reliable pixels.
+Layout RadialWalls(const std::vector<double>& walls) {
+  Layout layout;
+  layout.Fill([](int dx, int dy) { return dx * dx + dy * dy > 20 * 20; });
+  layout.Edges([&](int dx, int dy) {
+    const int d2 = dx * dx + dy * dy;
+    if (d2 < 12 * 12) return false;
+    for (double wall : walls) {
+      const double off = std::fabs(Wrap(AngleOf(dx, dy) - wall, -180.0));
+      if (off * kPi / 180.0 * std::sqrt(d2) < 2.0) return true;
+    }
+    return false;
+  });
+  return layout;
+}
+
+// The fixed sectors' boundaries 22.5 + 45 k degrees.
+std::vector<double> BoundaryWalls() {
+  std::vector<double> walls;
+  for (int k = 0; k < kNumSectors; ++k) walls.push_back(kFirstBoundaryDegrees + 45.0 * k);
+  return walls;
+}
+
 // With no sector counting a reliable pixel the search keeps the fixed
 // sectors exactly: no reliable pixel at all, or every boundary ray stopped by
 // a depth edge (edges along the fixed sectors' boundaries, reliable pixels
@@ -310,15 +335,7 @@ TEST(Equidistribution, NoCountKeepsTheFixedSectors) {
   EXPECT_FALSE(EquidistributedSectorRays(empty.Maps(), kCol, kRow, kMaxDistance, 2, 2, &rays));
   EXPECT_TRUE(same(rays));
 
-  Layout walled;
-  walled.Fill([](int dx, int dy) { return dx * dx + dy * dy > 20 * 20; });
-  walled.Edges([](int dx, int dy) {
-    const int d2 = dx * dx + dy * dy;
-    if (d2 < 3 * 3) return false;
-    const double angle = Wrap(AngleOf(dx, dy) - kFirstBoundaryDegrees, 0.0);
-    const double off = std::fmod(angle, 45.0);
-    return std::min(off, 45.0 - off) * kPi / 180.0 * std::sqrt(d2) < 1.0;
-  });
+  const Layout walled = RadialWalls(BoundaryWalls());
   std::memset(&rays, 0, sizeof(rays));
   EXPECT_FALSE(EquidistributedSectorRays(walled.Maps(), kCol, kRow, kMaxDistance, 2, 2, &rays));
   EXPECT_TRUE(same(rays));

@@ -209,6 +209,8 @@ TEST(DeformablePass, EquidistributionOffIsTheFixedSectorSearch) {
   Pass pass = DeformablePassWithClasses();
   pass.prior = true;
   MspStereoOptions msp;
+  msp.disassemble_clustering = false;  // the direct sweeps run APD's anchors
+  msp.synergistic_optimization = false;
   msp.equidistribution = false;
   DeformablePass off_step(msp, kNumThreads);
   off_step.Run(pass, off.params, &off.state);
@@ -296,6 +298,7 @@ void RunFromRandomPlanes(const MspStereoOptions& msp, Scene* s) {
 // settings of the APD baseline given to the iterations directly.
 TEST(DeformablePass, DisassembleClusteringOffIsApdsStep) {
   MspStereoOptions msp;
+  msp.equidistribution = false;  // the direct sweeps cast the fixed sectors
   msp.disassemble_clustering = false;
   msp.synergistic_optimization = false;
   Scene off, apd, on;
@@ -321,6 +324,7 @@ TEST(DeformablePass, DisassembleClusteringOffIsApdsStep) {
 // alone: the settings without the optimization given to the iterations.
 TEST(DeformablePass, SynergisticOptimizationOffIsClusteringAlone) {
   MspStereoOptions msp;
+  msp.equidistribution = false;  // the direct sweeps cast the fixed sectors
   msp.synergistic_optimization = false;
   Scene off, clustering, on;
   RunFromRandomPlanes(msp, &off);

@@ -78,7 +78,7 @@ struct DeformableBuffers {
   std::vector<int> slot;  // pixel -> its entry in anchors and hits, -1 = none
   std::vector<core::AnchorSet> anchors;
   std::vector<core::AnchorHits> hits;
-  std::vector<uint32_t> solutions;  // each anchored pixel's sampling solution
+  std::vector<uint32_t> solutions;   // each anchored pixel's sampling solution
   std::vector<float> depth, normal;  // the iteration's snapshot of the planes
   std::vector<int> row_start;        // first entry of each row in the prior's anchors
   std::unique_ptr<AnchorPairCachePool> caches;

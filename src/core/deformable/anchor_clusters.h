@@ -25,7 +25,7 @@ namespace core {
 // that anchors on neighbouring rays of one sector join while those of
 // different sectors at the same radius (45 degrees apart, 0.77 r) do not.
 constexpr int kDefaultDbscanEta = 2;
-constexpr float kMinAutomaticDbscanGamma = 3.0f;       // px
+constexpr float kMinAutomaticDbscanGamma = 3.0f;        // px
 constexpr float kDbscanGammaPerMedianDistance = 0.25f;  // of the median anchor distance
 // The lane's samples, as APD's 3x3 anchor window has (paper: 9 / k_i per sub-patch).
 constexpr int kClusterLaneSamples = 9;
@@ -222,7 +222,6 @@ MSP_HD void SubPatchGridOffset(int t, int n, int h, int* dx, int* dy) {
     *dy = h * kEvenY[u];
   }
 }
-
 
 // The lanes' samples: cluster c is lane c, its m-th anchor holds
 // SubPatchSamples(m, k, kClusterLaneSamples) of them inside its sub-patch,

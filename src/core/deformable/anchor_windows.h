@@ -117,8 +117,8 @@ MSP_HD void PrepareAnchorWindows(const ImageView& ref, const LaneSamples& sample
   w->radius = radius;
   w->fast = 0u;
   w->textured = 0u;
-  w->num_samples =
-      samples.num_samples <= kMaxAnchorWindowSamples ? samples.num_samples : kMaxAnchorWindowSamples;
+  w->num_samples = samples.num_samples <= kMaxAnchorWindowSamples ? samples.num_samples
+                                                                  : kMaxAnchorWindowSamples;
   for (int a = 0; a < kMaxAnchors; ++a) {
     const bool used = a < w->count;
     w->spread[a] = 0.0f;

@@ -279,8 +279,8 @@ MSP_HD bool FitAnchors(const Camera& cam, const AnchorMaps& maps, int col, int r
     const float e = fabsf(Dot(best_normal, points[k]) + best_dist);
     error[k] = e <= params.inlier_threshold ? e : kNotAnInlier;
   }
-  const int max_anchors = params.max_anchors < kMaxKeptAnchors ? params.max_anchors
-                                                                : kMaxKeptAnchors;
+  const int max_anchors =
+      params.max_anchors < kMaxKeptAnchors ? params.max_anchors : kMaxKeptAnchors;
   while (out->count < max_anchors) {
     int pick = 0;  // the first smallest error, branch-free
     for (int k = 1; k < n; ++k) {

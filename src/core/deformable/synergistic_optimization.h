@@ -5,10 +5,9 @@
 // sub-patches instead. A solution (the samples of every lane) is a pure
 // function of a 32-bit seed, so a pixel keeps its solution from one iteration
 // to the next as one number. The optimization draws J new solutions, profiles
-// the deformable cost of each (and of the solution in use) over mu
-// disparities around the pixel's depth, keeps the solution whose profile is
-// lowest and most peaked (eq. 9), and offers the best depth of that profile
-// as a candidate.
+// the deformable cost of each over mu disparities around the pixel's depth,
+// keeps the solution whose profile is lowest and most peaked (eq. 9), and
+// offers the best depth of that profile as a candidate.
 #pragma once
 
 #include <cmath>
@@ -141,14 +140,16 @@ MSP_HD void PrepareSampledWindows(const PassParams& p, const AnchorSet& anchors,
 // The 3D optimization of pixel (col, row) in `iteration`: its plane's
 // normal, mu depths d_i = d + (i - (mu + 1) / 2) delta in disparity (eq. 8),
 // disparity = f b / depth with b the mean baseline to the pixel's selected
-// views (as the reliability curve), and each solution's cost profile C_j:
-// the deformable photometric cost (eq. 3, lanes = the clusters' sampled
+// views (as the reliability curve), and each drawn solution's cost profile
+// C_j: the deformable photometric cost (eq. 3, lanes = the clusters' sampled
 // sub-patches) averaged over those views with uniform weights. The centre
-// window's costs do not depend on the solution and are scored once. The
-// solution in use (*solution) competes with the J drawn ones and keeps its
-// place on ties; *solution receives the one of lowest F (eq. 9). Returns
-// true with *candidate = the lowest-cost depth of the chosen profile when
-// that is not the current depth.
+// window's costs do not depend on the solution and are scored once. As in
+// the paper, the J drawn solutions compete (the first wins ties) and the one
+// of lowest F (eq. 9) replaces the solution in use, *solution, which is not
+// scored: run once per pass, it is a random draw like them. Returns true
+// with *candidate = the lowest-cost depth of the chosen profile when that is
+// not the current depth; false, with *solution unchanged, when the pixel
+// has no depth, selected view or cluster.
 MSP_HD bool OptimizeSampling(const PassParams& p, int col, int row, int iteration,
                              const RefWindow& centre, const AnchorSet& anchors,
                              const AnchorClusters& clusters, const DeformableParams& d,
@@ -164,10 +165,10 @@ MSP_HD bool OptimizeSampling(const PassParams& p, int col, int row, int iteratio
   float weights[kMaxSourceViews];
   MaskWeights(p, mask, weights);
   const float total_weight = TotalWeight(weights, p.num_src);
-  const int mu = sp.disparity_samples < 1 ? 1
-                                          : (sp.disparity_samples > kMaxDisparitySamples
-                                                 ? kMaxDisparitySamples
-                                                 : sp.disparity_samples);
+  const int mu = sp.disparity_samples < 1
+                     ? 1
+                     : (sp.disparity_samples > kMaxDisparitySamples ? kMaxDisparitySamples
+                                                                    : sp.disparity_samples);
   const int middle = (mu - 1) / 2;
   PlaneHypothesis h[kWindowLanes];
   bool in_range[kWindowLanes];
@@ -196,22 +197,23 @@ MSP_HD bool OptimizeSampling(const PassParams& p, int col, int row, int iteratio
     CandidateWindowCosts(p, centre, j, planes, lanes, mu, H[v], centre_cost[v]);
     take[v] = 0u;
     for (int k = 0; k < mu; ++k) {
-      const bool part = ((lanes >> k) & 1u) &&
-                        !(centre_cost[v][k] >= kMaxCost &&
-                          !CentreInSource(H[v][k], p.src[j].image, col, row));
+      const bool part =
+          ((lanes >> k) & 1u) &&
+          !(centre_cost[v][k] >= kMaxCost && !CentreInSource(H[v][k], p.src[j].image, col, row));
       take[v] |= part ? 1u << k : 0u;
     }
   }
   const NccParams anchor_ncc = AnchorNccParams(p.ncc, d);
   const int num_solutions =
-      sp.solutions < 0 ? 0 : (sp.solutions > kMaxSamplingSolutions ? kMaxSamplingSolutions
-                                                                   : sp.solutions);
+      sp.solutions < 1
+          ? 1
+          : (sp.solutions > kMaxSamplingSolutions ? kMaxSamplingSolutions : sp.solutions);
   const uint32_t pixel = static_cast<uint32_t>(i);
   float best_f = 0.0f;
   uint32_t best_seed = *solution;
   float best_profile[kWindowLanes];
-  for (int sol = 0; sol <= num_solutions; ++sol) {
-    const uint32_t seed = sol == 0 ? *solution : DrawnSamplingSolution(p, iteration, pixel, sol);
+  for (int sol = 1; sol <= num_solutions; ++sol) {
+    const uint32_t seed = DrawnSamplingSolution(p, iteration, pixel, sol);
     AnchorWindows w;
     PrepareSampledWindows(p, anchors, clusters, d, seed, &w);
     float profile[kWindowLanes];
@@ -234,7 +236,7 @@ MSP_HD bool OptimizeSampling(const PassParams& p, int col, int row, int iteratio
       profile[k] = sum / total_weight;
     }
     const float f = ProfileObjective(profile, mu, sp);
-    if (sol == 0 || f < best_f) {
+    if (sol == 1 || f < best_f) {
       best_f = f;
       best_seed = seed;
       for (int k = 0; k < mu; ++k) best_profile[k] = profile[k];

@@ -128,8 +128,7 @@ TEST(SynergisticOptimization, ProfileFindsTheTrueDepthTwoStepsAway) {
   ASSERT_TRUE(scene.Optimize(DefaultSynergyParams(), &solution, &candidate));
   EXPECT_NEAR(candidate.depth, 4.0f, 1e-3f);
   EXPECT_FLOAT_EQ(candidate.normal.z, -1.0f);
-  // Run again in the same iteration, the chosen solution beats the same
-  // drawn ones again and stays.
+  // Run again in the same iteration, the same draws choose the same solution.
   const uint32_t chosen = solution;
   ASSERT_TRUE(scene.Optimize(DefaultSynergyParams(), &solution, &candidate));
   EXPECT_EQ(solution, chosen);
@@ -144,15 +143,26 @@ TEST(SynergisticOptimization, ProfileFindsTheTrueDepthTwoStepsAway) {
   EXPECT_GT(std::fabs(near_end.depth - 4.0f), 1e-3f);
 }
 
-TEST(SynergisticOptimization, AnObjectiveOfZeroKeepsTheSolutionInUse) {
+TEST(SynergisticOptimization, TheDrawnSolutionOfLeastObjectiveReplacesTheOneInUse) {
   OffsetScene scene;
   uint32_t solution = 7u;
   PlaneHypothesis candidate;
+  // With an objective of 0 for every profile the first drawn solution wins.
   scene.Optimize(Params(0.0f, false), &solution, &candidate);
-  EXPECT_EQ(solution, 7u);
-  // With an objective, some drawn solution beats an arbitrary one.
+  const uint32_t first = DrawnSamplingSolution(
+      scene.s.params, 0,
+      static_cast<uint32_t>(scene.s.params.state.Index(OffsetScene::kCol, OffsetScene::kRow)), 1);
+  EXPECT_EQ(solution, first);
+  // With eq. 9 another one does (J = 6 draws).
+  solution = 7u;
   scene.Optimize(DefaultSynergyParams(), &solution, &candidate);
   EXPECT_NE(solution, 7u);
+  EXPECT_NE(solution, first);
+  // A pixel without a selected view keeps its solution.
+  scene.s.state_mask[scene.s.params.state.Index(OffsetScene::kCol, OffsetScene::kRow)] = 0u;
+  solution = 7u;
+  EXPECT_FALSE(scene.Optimize(DefaultSynergyParams(), &solution, &candidate));
+  EXPECT_EQ(solution, 7u);
 }
 
 }  // namespace

@@ -310,9 +310,8 @@ TEST(DeformablePass, DisassembleClusteringOffIsApdsStep) {
   settings.cost = core::DefaultDeformableParams();
   const ReliabilityMaps maps = MakeReliabilityMaps(BlockClasses(), kWidth, kHeight, kNumThreads);
   DeformableBuffers buffers;
-  RunDeformableCheckerboardIterations(apd.params, maps, settings,
-                                      DeformablePassWithClasses().iterations, kNumThreads,
-                                      &buffers);
+  RunDeformableCheckerboardIterations(
+      apd.params, maps, settings, DeformablePassWithClasses().iterations, kNumThreads, &buffers);
   ExpectSameState(off.state, apd.state);
   // Switched on, the clusters' costs choose other planes somewhere.
   msp.disassemble_clustering = true;

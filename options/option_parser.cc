@@ -238,6 +238,15 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
   MSP_ADD_OPTION(t, *m, num_mask_levels,
                  "Label layers of the embedded segmenter for images without mask files (1.." +
                      std::to_string(core::kMaxLabelLayers) + "); mask files set their own count.");
+  MSP_ADD_OPTION(t, *m, geometry_layers,
+                 "Add two label layers segmented from each image's current depth and normal maps "
+                 "to the embedded segmenter's colour layers, so the prior's edges can follow "
+                 "depth edges and creases between surfaces of alike colour (mask files get "
+                 "none); false = colour layers only.");
+  MSP_ADD_OPTION(t, *m, segmenter,
+                 "{opencv, embedded}. Felzenszwalb-Huttenlocher graph segmentation of the "
+                 "embedded label layers and of segment planes: OpenCV contrib's (ximgproc) or "
+                 "this project's own.");
   MSP_ADD_OPTION(t, *m, write_previews,
                  "Write pictures of each image's final maps to stereo/prior_previews/: "
                  "<image>.depth.png (colour scale, near red, far blue), <image>.normal.png, "

@@ -127,6 +127,13 @@ struct MspStereoOptions {
   bool edge_refinement = true;
   // Label layers the embedded segmenter builds for an image without mask files (paper: 3).
   int num_mask_levels = 3;
+  // Add label layers segmented from the current depth and normal maps to the embedded colour
+  // layers (never to mask files), so the prior sees depth edges between alike colours; false =
+  // colour layers only.
+  bool geometry_layers = true;
+  // Graph segmenter of the embedded layers and of segment planes: "opencv" (OpenCV contrib's
+  // ximgproc) or "embedded" (this project's).
+  std::string segmenter = "embedded";
   // Write pictures to <workspace>/stereo/prior_previews/: <image>.{depth,normal,error}.png of the
   // final maps (error with a ground_truth/ folder), <image>.png of the prior's edges.
   bool write_previews = false;

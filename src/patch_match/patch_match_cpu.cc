@@ -86,7 +86,8 @@ class CpuRunner {
         sink_(sink),
         threads_(ResolveNumThreads(msp.num_threads)),
         cache_(static_cast<size_t>(pm.cache_size * kBytesPerGigabyte), scratch_dir),
-        deformable_(msp, threads_) {
+        deformable_(msp, threads_),
+        segmenter_(SegmenterFromName(msp.segmenter)) {
     if (SegmentationPriorEnabled(msp)) prior_.reset(new PriorDriver(views, msp, threads_));
   }
 
@@ -287,7 +288,7 @@ class CpuRunner {
   void RunSegmentPlanes(const core::PassParams& params, const Problem& problem) {
     const auto t0 = std::chrono::steady_clock::now();
     const SegmentPlanesReport r =
-        ApplySegmentPlanes(params, level_->color.at(problem.ref), threads_);
+        ApplySegmentPlanes(params, level_->color.at(problem.ref), segmenter_, threads_);
     std::printf(
         "  segment planes: %d of %d segments, %.1f%% of pixels offered, %.1f%% took; %.2f s\n",
         r.num_planes, r.num_segments,
@@ -299,18 +300,22 @@ class CpuRunner {
   // anchors of this pass and the depth the pass left give the edges that
   // confine the following passes. The first call of an image has only the
   // photometric pass's depth, mostly noise where the prior matters
-  // (textureless regions), so its CRF uses colour only.
+  // (textureless regions), so its CRF uses colour only. The geometry layers
+  // segment the depth and normals the pass left.
   void RunPrior(const Pass& pass, const Problem& problem, PixelState* state) {
-    DenseMap depth;
-    const bool with_depth = !state->edges.empty();
-    if (with_depth) {
-      depth = DenseMap(state->width, state->height, 1);
-      depth.data = state->depth;
+    DenseMap depth(state->width, state->height, 1);
+    depth.data = state->depth;
+    DenseMap normal;
+    if (msp_.geometry_layers) {
+      normal = DenseMap(state->width, state->height, 3);
+      normal.data = state->normal;
     }
     PriorPassInput input;
     input.view = problem.ref;
     input.color = &level_->color.at(problem.ref);
-    input.depth = with_depth ? &depth : nullptr;
+    input.depth = state->edges.empty() ? nullptr : &depth;
+    input.geometry_depth = msp_.geometry_layers ? &depth : nullptr;
+    input.geometry_normal = msp_.geometry_layers ? &normal : nullptr;
     input.depth_min = problem.depth_min;
     input.depth_max = problem.depth_max;
     input.anchors = &deformable_.prior_anchors();
@@ -392,6 +397,7 @@ class CpuRunner {
   std::unique_ptr<Level> coarser_;      // the previous round's, null in the first round
   std::unique_ptr<PriorDriver> prior_;  // null = no segmentation prior
   DeformablePass deformable_;           // the deformable step and its buffers
+  const Segmenter segmenter_;           // of segment planes
   std::chrono::steady_clock::time_point start_;
 };
 

@@ -207,11 +207,12 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
 }
 
 SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params, const DenseMap& color,
-                                       int num_threads) {
+                                       Segmenter segmenter, int num_threads) {
   const core::PixelStateView& s = params.state;
   const int n = s.width * s.height;
   const std::vector<int32_t> labels = SegmentGraph(
-      color, SegmentationScale(kSegmentLevel, kNumSegmentLevels, color.width, color.height));
+      color, SegmentationScale(kSegmentLevel, kNumSegmentLevels, color.width, color.height),
+      segmenter);
   std::vector<float> texture(n);
   std::vector<uint8_t> reliable(n);
   ParallelFor(0, s.height, num_threads, [&](int row) {

@@ -13,6 +13,7 @@
 #include "base/dense_map.h"
 #include "core/math/vec.h"
 #include "core/patch_match/patch_match_kernel.h"
+#include "prior/graph_segmentation.h"
 
 namespace msp {
 
@@ -40,8 +41,9 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
                                            const std::vector<uint8_t>& reliable, uint64_t key);
 
 // The whole step on the state of `params`: segments `color` (the reference
-// image at the pass's level, RGB planes), fits the planes, offers them.
+// image at the pass's level, RGB planes) with `segmenter`, fits the planes,
+// offers them.
 SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params, const DenseMap& color,
-                                       int num_threads);
+                                       Segmenter segmenter, int num_threads);
 
 }  // namespace msp

@@ -7,6 +7,7 @@
 
 #include "base/seconds_since.h"
 #include "prior/crf_refinement.h"
+#include "prior/geometry_layers.h"
 #include "prior/multiscale_segmentation.h"
 
 namespace msp {
@@ -93,25 +94,42 @@ std::vector<uint8_t> UnpackEdgeBit(const std::vector<uint8_t>& packed, uint8_t b
 
 PriorDriver::PriorDriver(const std::vector<View>& views, const MspStereoOptions& options,
                          int num_threads)
-    : views_(views), options_(options) {
+    : views_(views), options_(options), segmenter_(SegmenterFromName(options.segmenter)) {
   options_.num_threads = num_threads;
 }
 
 void PriorDriver::StartRound() { round_layers_.clear(); }
 
-const LabelLayers& PriorDriver::Layers(int view, const DenseMap& color) {
+bool PriorDriver::FromMaskFiles(int view) const {
+  const ImageLabelLayers& given = views_[view].mask_layers;
+  return given.source == LabelSource::kMaskFiles && !given.layers.levels.empty();
+}
+
+const LabelLayers& PriorDriver::RoundLayers(int view, const DenseMap& color) {
   auto it = round_layers_.find(view);
   if (it != round_layers_.end()) return it->second;
-  const ImageLabelLayers& given = views_[view].mask_layers;
-  const bool from_files = given.source == LabelSource::kMaskFiles && !given.layers.levels.empty();
-  LabelLayers layers = from_files ? ResampleNearest(given.layers, color.width, color.height)
-                                  : SegmentMultiscale(color, options_.num_mask_levels);
-  if (logged_source_.insert(view).second) {
-    std::printf("  segmentation prior of %s: %d label layers from the %s\n",
-                views_[view].name.c_str(), layers.NumLevels(),
-                from_files ? "mask files" : "embedded segmenter");
-  }
+  LabelLayers layers =
+      FromMaskFiles(view)
+          ? ResampleNearest(views_[view].mask_layers.layers, color.width, color.height)
+          : SegmentMultiscale(color, options_.num_mask_levels, segmenter_);
   return round_layers_.emplace(view, std::move(layers)).first->second;
+}
+
+void PriorDriver::LogSources(int view, int num_round_layers, bool with_geometry) {
+  if (!logged_source_.insert(view).second) return;
+  if (FromMaskFiles(view)) {
+    std::printf("  segmentation prior of %s: %d label layers from the mask files%s\n",
+                views_[view].name.c_str(), num_round_layers,
+                options_.geometry_layers ? " (no geometry layers: mask files decide)" : "");
+    return;
+  }
+  std::printf("  segmentation prior of %s: %d colour label layers from the embedded segmenter (%s)",
+              views_[view].name.c_str(), num_round_layers, SegmenterName(segmenter_));
+  if (with_geometry) {
+    std::printf(" and %d geometry layers from the current depth and normal maps",
+                core::kNumGeometryLayers);
+  }
+  std::printf("\n");
 }
 
 std::vector<uint8_t> PriorDriver::Run(const PriorPassInput& input) {
@@ -119,19 +137,32 @@ std::vector<uint8_t> PriorDriver::Run(const PriorPassInput& input) {
     throw std::logic_error("PriorDriver::Run: the prior needs the colour image and the anchors");
   }
   const auto start = std::chrono::steady_clock::now();
-  const LabelLayers& layers = Layers(input.view, *input.color);
+  const LabelLayers& round_layers = RoundLayers(input.view, *input.color);
   const double layer_seconds = SecondsSince(start);
-  const SegmentationPriorResult result = RunSegmentationPrior(layers, input, options_);
+  const bool with_geometry = options_.geometry_layers && !FromMaskFiles(input.view) &&
+                             input.geometry_depth != nullptr && input.geometry_normal != nullptr;
+  LogSources(input.view, round_layers.NumLevels(), with_geometry);
+  const auto geometry_start = std::chrono::steady_clock::now();
+  LabelLayers all_layers;
+  if (with_geometry) {
+    all_layers = AppendLayers(round_layers, SegmentGeometry(*input.geometry_depth,
+                                                            *input.geometry_normal, segmenter_,
+                                                            options_.num_threads));
+  }
+  const double geometry_seconds = SecondsSince(geometry_start);
+  const SegmentationPriorResult result =
+      RunSegmentationPrior(with_geometry ? all_layers : round_layers, input, options_);
   std::vector<uint8_t> packed = PackPriorEdges(result);
   const double seconds = SecondsSince(start);
   total_seconds_ += seconds;
   ++num_calls_;
   const SegmentationPriorTimes& t = result.times;
   std::printf(
-      "  segmentation prior: %.3f s (layers %.3f, boundaries %.3f, best layers %.3f, "
-      "aggregation %.3f, CRF %.3f%s), %zu anchored pixels, edges on %.1f%% of pixels\n",
-      seconds, layer_seconds, t.boundaries_s, t.best_layers_s, t.aggregation_s, t.refinement_s,
-      options_.edge_refinement && input.depth == nullptr ? " colour only" : "",
+      "  segmentation prior: %.3f s (layers %.3f, geometry layers %.3f, boundaries %.3f, best "
+      "layers %.3f, aggregation %.3f, CRF %.3f%s), %zu anchored pixels, edges on %.1f%% of "
+      "pixels\n",
+      seconds, layer_seconds, geometry_seconds, t.boundaries_s, t.best_layers_s, t.aggregation_s,
+      t.refinement_s, options_.edge_refinement && input.depth == nullptr ? " colour only" : "",
       input.anchors->size(), 100.0 * EdgeShare(packed));
   return packed;
 }

@@ -1,7 +1,8 @@
 // The segmentation prior as the CPU passes use it (docs/method.md section 4). Per
 // reference image and round, the label layers at the round's resolution (the
 // user's mask layers resampled, or the embedded segmenter on the colour
-// image); per deformable pass, edge aggregation of the layers by the anchors
+// image); per deformable pass, with the embedded layers, the geometry layers
+// of the current depth and normal maps (geometry_layers.h); then edge aggregation of the layers by the anchors
 // of the unreliable pixels (eqs. 4-5) or, switched off, the union of their
 // boundaries, then CRF refinement (eq. 6) on colour and the current depth.
 // The edges, packed into one byte per pixel (the form PixelState keeps them
@@ -17,6 +18,7 @@
 #include "base/mvs_input.h"
 #include "core/prior/best_layer.h"
 #include "options/stereo_options.h"
+#include "prior/graph_segmentation.h"
 #include "prior/label_layers.h"
 #include "prior/segmentation_prior.h"
 
@@ -35,6 +37,10 @@ struct PriorPassInput {
   int view = -1;                    // index into the views
   const DenseMap* color = nullptr;  // RGB planes in [0, 1] at the round's resolution
   const DenseMap* depth = nullptr;  // current depth; null = colour-only CRF
+  // Current depth and normal maps for the geometry layers; null = colour
+  // layers only (also with geometry_layers off or mask files).
+  const DenseMap* geometry_depth = nullptr;
+  const DenseMap* geometry_normal = nullptr;
   float depth_min = 0.0f;
   float depth_max = 0.0f;
   // Unreliable pixels with their anchors (up to kMaxPriorAnchors each) and
@@ -89,10 +95,14 @@ class PriorDriver {
   int NumCalls() const { return num_calls_; }
 
  private:
-  const LabelLayers& Layers(int view, const DenseMap& color);
+  bool FromMaskFiles(int view) const;
+  // The round's layers of the mask files or of the embedded colour segmenter.
+  const LabelLayers& RoundLayers(int view, const DenseMap& color);
+  void LogSources(int view, int num_round_layers, bool with_geometry);
 
   const std::vector<View>& views_;
   MspStereoOptions options_;  // num_threads resolved
+  Segmenter segmenter_;
   std::map<int, LabelLayers> round_layers_;
   std::set<int> logged_source_;
   double total_seconds_ = 0.0;

@@ -180,6 +180,10 @@ TEST(OptionCheck, SegmentationPriorRules) {
       {"MspStereo.num_mask_levels", "0", "[1, 32]", [](auto* o) { o->msp.num_mask_levels = 0; }},
       {"MspStereo.num_mask_levels", "33", "kMaxLabelLayers",
        [](auto* o) { o->msp.num_mask_levels = 33; }},
+      {"MspStereo.num_mask_levels", "31", "[1, 30] with --MspStereo.geometry_layers",
+       [](auto* o) { o->msp.num_mask_levels = 31; }},
+      {"MspStereo.segmenter", "`fast`", "one of {opencv, embedded}",
+       [](auto* o) { o->msp.segmenter = "fast"; }},
       {"MspStereo.crf_alpha", "0", "> 0", [](auto* o) { o->msp.crf_alpha = 0; }},
       {"MspStereo.crf_beta", "-1", "> 0", [](auto* o) { o->msp.crf_beta = -1; }},
       {"MspStereo.crf_unary_confidence", "1", "(0, 1)",
@@ -194,6 +198,18 @@ TEST(OptionCheck, SegmentationPriorRules) {
     EXPECT_TRUE(IsRegistered(NamedOption(message))) << message;
     EXPECT_NE(message.find(c.value), std::string::npos) << message;
     EXPECT_NE(message.find(c.range), std::string::npos) << message;
+  }
+}
+
+TEST(OptionCheck, GeometryLayersOffLeaveAllLayersToColourAndBothSegmentersAreValid) {
+  StereoCommandOptions o = Valid();
+  o.msp.geometry_layers = false;
+  o.msp.num_mask_levels = 32;
+  EXPECT_EQ(CheckError(o), "");
+  for (const char* segmenter : {"opencv", "embedded"}) {
+    o = Valid();
+    o.msp.segmenter = segmenter;
+    EXPECT_EQ(CheckError(o), "") << segmenter;
   }
 }
 

@@ -10,12 +10,17 @@ namespace core {
 // Label layers per image. A pixel's set of best layers (eq. 4, ties kept) is a
 // uint32_t bit set, so this many layers fit; the paper uses 3.
 constexpr int kMaxLabelLayers = 32;
+// Geometry label layers (segmented depth and normal maps) added to the
+// embedded colour layers with --MspStereo.geometry_layers: a coarser and a
+// finer granularity.
+constexpr int kNumGeometryLayers = 2;
 // Anchors of one unreliable pixel seen by the prior: 8 sectors x 4 anchors of
 // the disassemble-clustering step; a pixel's anchor subset S_n is a uint32_t
 // bit set over them.
 constexpr int kMaxPriorAnchors = 32;
 
 static_assert(kMaxLabelLayers <= 32, "best-layer sets are uint32_t bit sets");
+static_assert(kNumGeometryLayers < kMaxLabelLayers, "geometry layers leave room for colour");
 static_assert(kMaxPriorAnchors <= 32, "anchor subsets are uint32_t bit sets");
 
 }  // namespace core

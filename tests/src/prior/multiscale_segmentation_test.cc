@@ -46,7 +46,7 @@ int CountRegions(const std::vector<int32_t>& labels) {
 }
 
 TEST(MultiscaleSegmentation, NoRegionCrossesAColourEdge) {
-  const LabelLayers layers = SegmentMultiscale(RedBlueImage(), 3);
+  const LabelLayers layers = SegmentMultiscale(RedBlueImage(), 3, Segmenter::kEmbedded);
   ASSERT_EQ(layers.NumLevels(), 3);
   EXPECT_EQ(layers.width, kWidth);
   EXPECT_EQ(layers.height, kHeight);
@@ -72,7 +72,7 @@ TEST(MultiscaleSegmentation, NoRegionCrossesAColourEdge) {
 }
 
 TEST(MultiscaleSegmentation, FinerLevelsHaveMoreRegions) {
-  const LabelLayers layers = SegmentMultiscale(BlockImage(), 3);
+  const LabelLayers layers = SegmentMultiscale(BlockImage(), 3, Segmenter::kEmbedded);
   const int coarse = CountRegions(layers.levels[0]);
   const int middle = CountRegions(layers.levels[1]);
   const int fine = CountRegions(layers.levels[2]);
@@ -83,10 +83,10 @@ TEST(MultiscaleSegmentation, FinerLevelsHaveMoreRegions) {
 
 TEST(MultiscaleSegmentation, DeterministicAndEqualToTheSingleScaleCall) {
   const DenseMap image = BlockImage();
-  const LabelLayers a = SegmentMultiscale(image, 3);
-  const LabelLayers b = SegmentMultiscale(image, 3);
+  const LabelLayers a = SegmentMultiscale(image, 3, Segmenter::kEmbedded);
+  const LabelLayers b = SegmentMultiscale(image, 3, Segmenter::kEmbedded);
   EXPECT_EQ(a.levels, b.levels);
-  EXPECT_EQ(a.levels[1], SegmentGraph(image, SegmentationScale(1, 3, kWidth, kHeight)));
+  EXPECT_EQ(a.levels[1], SegmentGraph(image, SegmentationScale(1, 3, kWidth, kHeight), Segmenter::kEmbedded));
 }
 
 TEST(MultiscaleSegmentation, ScalesGoFromCoarseToFineAndFollowTheImageArea) {

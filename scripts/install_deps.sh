@@ -6,6 +6,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake ninja-build pkg-config   # toolchain
   libeigen3-dev libopencv-dev libboost-program-options-dev  # libraries
+  libopencv-contrib-dev                          # ximgproc: a graph segmenter of the prior
   libgtest-dev libgmock-dev                      # tests
   colmap                                         # stereo_fusion for demos and tests (no CUDA needed)
   python3-numpy python3-opencv                   # bench/ply_stats.py

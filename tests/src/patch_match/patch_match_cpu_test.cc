@@ -134,6 +134,34 @@ TEST(PatchMatchCpu, DeterministicAcrossThreadCountsWithAndWithoutPrior) {
   }
 }
 
+// Both segmenters, with and without the geometry layers: the same seed gives
+// the same maps and prior edges on 1 and 2 threads.
+TEST(PatchMatchCpu, DeterministicWithBothSegmentersAndGeometryLayers) {
+  const std::vector<View> views = test::RenderFrontoParallelPlane(48, 40, 3, kPlaneDepth, 0.25f);
+  const std::vector<Problem> problems = AllProblems(3);
+  PatchMatchStereoOptions pm;
+  const test::TempDir scratch;
+  for (const char* segmenter : {"opencv", "embedded"}) {
+    for (bool geometry : {true, false}) {
+      SCOPED_TRACE(std::string(segmenter) + (geometry ? " with" : " without") +
+                   " geometry layers");
+      MspStereoOptions msp;
+      msp.seed = 5;
+      msp.segmenter = segmenter;
+      msp.geometry_layers = geometry;
+      msp.write_previews = true;
+      MemorySink one, two;
+      msp.num_threads = 1;
+      RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), one);
+      msp.num_threads = 2;
+      RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), two);
+      ExpectSameMaps(one, two);
+      EXPECT_EQ(one.previews, two.previews);
+      EXPECT_EQ(one.previews.size(), 3u);
+    }
+  }
+}
+
 // A reference view with user mask layers uses them, not the embedded
 // segmenter: its one layer (two regions split at column kSplit) is the only
 // layer, so every region is kept and B' is exactly the split, 2 px wide.

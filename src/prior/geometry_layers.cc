@@ -33,9 +33,10 @@ GraphSegmentationScale GeometryScale(int level, int width, int height) {
   GraphSegmentationScale scale;
   scale.k = level == 0 ? kCoarseK : kFineK;
   const double area = static_cast<double>(width) * height;
-  scale.min_size = level == 0 ? std::max(kMinRegionFloor,
-                                         static_cast<int>(std::lround(kCoarseMinSizeFraction * area)))
-                              : kMinRegionFloor;
+  scale.min_size =
+      level == 0
+          ? std::max(kMinRegionFloor, static_cast<int>(std::lround(kCoarseMinSizeFraction * area)))
+          : kMinRegionFloor;
   return scale;
 }
 

@@ -145,9 +145,9 @@ std::vector<uint8_t> PriorDriver::Run(const PriorPassInput& input) {
   const auto geometry_start = std::chrono::steady_clock::now();
   LabelLayers all_layers;
   if (with_geometry) {
-    all_layers = AppendLayers(round_layers, SegmentGeometry(*input.geometry_depth,
-                                                            *input.geometry_normal, segmenter_,
-                                                            options_.num_threads));
+    all_layers =
+        AppendLayers(round_layers, SegmentGeometry(*input.geometry_depth, *input.geometry_normal,
+                                                   segmenter_, options_.num_threads));
   }
   const double geometry_seconds = SecondsSince(geometry_start);
   const SegmentationPriorResult result =

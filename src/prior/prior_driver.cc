@@ -142,6 +142,12 @@ std::vector<uint8_t> PriorDriver::Run(const PriorPassInput& input) {
   const bool with_geometry = options_.geometry_layers && !FromMaskFiles(input.view) &&
                              input.geometry_depth != nullptr && input.geometry_normal != nullptr;
   LogSources(input.view, round_layers.NumLevels(), with_geometry);
+  if (with_geometry && (input.geometry_depth->width != input.color->width ||
+                        input.geometry_depth->height != input.color->height ||
+                        input.geometry_normal->width != input.color->width ||
+                        input.geometry_normal->height != input.color->height)) {
+    throw std::logic_error("PriorDriver::Run: depth, normal and colour maps differ in size");
+  }
   const auto geometry_start = std::chrono::steady_clock::now();
   LabelLayers all_layers;
   if (with_geometry) {

@@ -126,8 +126,8 @@ void PriorDriver::LogSources(int view, int num_round_layers, bool with_geometry)
   std::printf("  segmentation prior of %s: %d colour label layers from the embedded segmenter (%s)",
               views_[view].name.c_str(), num_round_layers, SegmenterName(segmenter_));
   if (with_geometry) {
-    std::printf(" and %d geometry layers from the current depth and normal maps",
-                core::kNumGeometryLayers);
+    std::printf(" and %d geometry layer%s from the current depth and normal maps",
+                core::kNumGeometryLayers, core::kNumGeometryLayers == 1 ? "" : "s");
   }
   std::printf("\n");
 }

@@ -54,8 +54,7 @@ std::vector<uint8_t> TrueEdges(const DenseMap& depth, const DenseMap& normal, in
   std::vector<uint8_t> edges(static_cast<size_t>(w) * h, 0);
   const int W = depth.width, H = depth.height;
   auto mark = [&](int row, int col) {
-    edges[static_cast<size_t>(std::min(row * h / H, h - 1)) * w + std::min(col * w / W, w - 1)] =
-        1;
+    edges[static_cast<size_t>(std::min(row * h / H, h - 1)) * w + std::min(col * w / W, w - 1)] = 1;
   };
   for (int row = 0; row < H; ++row) {
     for (int col = 0; col < W; ++col) {
@@ -93,11 +92,12 @@ struct EdgeFigures {
   double edge_pixels = 0, on_depth = 0, on_surface = 0, depth_pixels = 0, recalled = 0;
   double regions = 0, seconds = 0, count = 0;
   void Print(const char* what) const {
-    std::printf("  %-26s %7.2f ms %6.0f regions  edges %5.1f%% of px  on depth edges %5.1f%%  "
-                "on depth edges or creases %5.1f%%  recall %5.1f%%\n",
-                what, 1e3 * seconds / count, regions / count, 100.0 * edge_pixels / depth_pixels_total,
-                100.0 * on_depth / edge_pixels, 100.0 * on_surface / edge_pixels,
-                100.0 * recalled / depth_pixels);
+    std::printf(
+        "  %-26s %7.2f ms %6.0f regions  edges %5.1f%% of px  on depth edges %5.1f%%  "
+        "on depth edges or creases %5.1f%%  recall %5.1f%%\n",
+        what, 1e3 * seconds / count, regions / count, 100.0 * edge_pixels / depth_pixels_total,
+        100.0 * on_depth / edge_pixels, 100.0 * on_surface / edge_pixels,
+        100.0 * recalled / depth_pixels);
   }
   double depth_pixels_total = 0;  // all map pixels
 };

@@ -131,11 +131,11 @@ void CheckMspStereoOptions(const MspStereoOptions& o) {
   MSP_CHECK_RANGE(o, num_mask_levels, 1, core::kMaxLabelLayers, Interval::kClosed,
                   " (best-layer sets are 32-bit sets, kMaxLabelLayers)");
   if (o.geometry_layers) {
-    MSP_CHECK_RANGE(o, num_mask_levels, 1, core::kMaxLabelLayers - core::kNumGeometryLayers,
-                    Interval::kClosed,
-                    " with " + MSP_OPTION_FLAG(o, geometry_layers) + " (its " +
-                        std::to_string(core::kNumGeometryLayers) + " layers count towards the " +
-                        std::to_string(core::kMaxLabelLayers) + " of kMaxLabelLayers)");
+    MSP_CHECK_RANGE(
+        o, num_mask_levels, 1, core::kMaxLabelLayers - core::kNumGeometryLayers, Interval::kClosed,
+        " with " + MSP_OPTION_FLAG(o, geometry_layers) + ", which adds " +
+            std::to_string(core::kNumGeometryLayers) +
+            " (kMaxLabelLayers = " + std::to_string(core::kMaxLabelLayers) + " in all)");
   }
   MSP_CHECK_ONE_OF(o, segmenter, "opencv", "embedded");
   MSP_CHECK_POSITIVE(o, crf_alpha);

@@ -247,7 +247,7 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
                  "Label layers of the embedded segmenter for images without mask files (1.." +
                      std::to_string(core::kMaxLabelLayers) + "); mask files set their own count.");
   MSP_ADD_OPTION(t, *m, geometry_layers,
-                 "Add two label layers segmented from each image's current depth and normal maps "
+                 "Add a label layer segmented from each image's current depth and normal maps "
                  "to the embedded segmenter's colour layers, so the prior's edges can follow "
                  "depth edges and creases between surfaces of alike colour (mask files get "
                  "none); false = colour layers only.");

@@ -139,7 +139,7 @@ struct MspStereoOptions {
   bool geometry_layers = true;
   // Graph segmenter of the embedded layers and of segment planes: "opencv" (OpenCV contrib's
   // ximgproc) or "embedded" (this project's).
-  std::string segmenter = "embedded";
+  std::string segmenter = "opencv";
   // Write pictures to <workspace>/stereo/prior_previews/: <image>.{depth,normal,error}.png of the
   // final maps (error with a ground_truth/ folder), <image>.png of the prior's edges.
   bool write_previews = false;

@@ -18,24 +18,23 @@ constexpr core::GeometryFeatureUnits kUnits{0.01f, 0.1f};
 // The depth edges are steps of one pixel: no smoothing, which would spread
 // a step over several weaker edges.
 constexpr FeatureSmoothing kGeometrySmoothing{0.0f, 1.0f};
-// k of the coarser and the finer layer, in the units above.
-constexpr float kCoarseK = 300.0f;
-constexpr float kFineK = 100.0f;
-// Smallest region of the coarser layer as a fraction of the image area, as the
-// colour scene level (1/500); the finer layer keeps 3x3 blocks.
-constexpr double kCoarseMinSizeFraction = 1.0 / 500.0;
+// k in the units above at 640 x 480 and larger for larger images, as the
+// colour levels (tau = k / |C| is measured in pixels); the smallest region is
+// 1/500 of the image, as the colour scene level, and at least a 3x3 block.
+constexpr float kGeometryK = 300.0f;
+constexpr double kReferenceArea = 640.0 * 480.0;
+constexpr double kMinSizeFraction = 1.0 / 500.0;
 constexpr int kMinRegionFloor = 9;
+static_assert(core::kNumGeometryLayers == 1, "one scale, GeometryScale, per geometry layer");
 
 }  // namespace
 
-GraphSegmentationScale GeometryScale(int level, int width, int height) {
-  assert(level >= 0 && level < core::kNumGeometryLayers);
-  GraphSegmentationScale scale;
-  scale.k = level == 0 ? kCoarseK : kFineK;
+GraphSegmentationScale GeometryScale(int width, int height) {
   const double area = static_cast<double>(width) * height;
-  scale.min_size = level == 0 ? std::max(kMinRegionFloor,
-                                         static_cast<int>(std::lround(kCoarseMinSizeFraction * area)))
-                              : kMinRegionFloor;
+  GraphSegmentationScale scale;
+  scale.k = static_cast<float>(kGeometryK * std::max(1.0, area / kReferenceArea));
+  scale.min_size =
+      std::max(kMinRegionFloor, static_cast<int>(std::lround(kMinSizeFraction * area)));
   return scale;
 }
 
@@ -62,10 +61,7 @@ DenseMap GeometryFeatureImage(const DenseMap& depth, const DenseMap& normal, int
 
 LabelLayers SegmentGeometry(const DenseMap& depth, const DenseMap& normal, Segmenter segmenter,
                             int num_threads) {
-  std::vector<GraphSegmentationScale> scales;
-  for (int level = 0; level < core::kNumGeometryLayers; ++level) {
-    scales.push_back(GeometryScale(level, depth.width, depth.height));
-  }
+  const std::vector<GraphSegmentationScale> scales = {GeometryScale(depth.width, depth.height)};
   LabelLayers layers;
   layers.width = depth.width;
   layers.height = depth.height;

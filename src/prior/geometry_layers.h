@@ -17,8 +17,8 @@
 
 namespace msp {
 
-// The scale of geometry layer `level` (0 = coarser) for a width x height map.
-GraphSegmentationScale GeometryScale(int level, int width, int height);
+// The scale of the geometry layer for a width x height map.
+GraphSegmentationScale GeometryScale(int width, int height);
 
 // The feature image of the geometry layers (core/prior/geometry_feature.h)
 // of a depth map (1 channel, 0 = none) and its normal map (3 channels, unit
@@ -27,7 +27,7 @@ GraphSegmentationScale GeometryScale(int level, int width, int height);
 // depth gives constant features.
 DenseMap GeometryFeatureImage(const DenseMap& depth, const DenseMap& normal, int num_threads);
 
-// core::kNumGeometryLayers label layers of the maps, coarse to fine.
+// The core::kNumGeometryLayers label layers of the maps.
 LabelLayers SegmentGeometry(const DenseMap& depth, const DenseMap& normal, Segmenter segmenter,
                             int num_threads);
 

@@ -4,11 +4,10 @@
 #include <cassert>
 #include <cmath>
 #include <cstring>
-#include <stdexcept>
-#include <unordered_map>
-
 #include <opencv2/core.hpp>
 #include <opencv2/ximgproc/segmentation.hpp>
+#include <stdexcept>
+#include <unordered_map>
 
 namespace msp {
 namespace {
@@ -180,9 +179,8 @@ std::vector<int32_t> SegmentSortedEdges(const std::vector<uint64_t>& edges, int 
 std::vector<std::vector<int32_t>> SegmentEmbedded(
     const DenseMap& features, const FeatureSmoothing& smoothing,
     const std::vector<GraphSegmentationScale>& scales) {
-  const std::vector<uint64_t> edges = SortedEdges(SmoothFeatures(features, smoothing),
-                                                  features.channels, features.width,
-                                                  features.height);
+  const std::vector<uint64_t> edges = SortedEdges(
+      SmoothFeatures(features, smoothing), features.channels, features.width, features.height);
   std::vector<std::vector<int32_t>> levels;
   for (const GraphSegmentationScale& scale : scales) {
     levels.push_back(SegmentSortedEdges(edges, features.width, features.height, scale));

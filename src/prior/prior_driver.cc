@@ -126,8 +126,8 @@ void PriorDriver::LogSources(int view, int num_round_layers, bool with_geometry)
   std::printf("  segmentation prior of %s: %d colour label layers from the embedded segmenter (%s)",
               views_[view].name.c_str(), num_round_layers, SegmenterName(segmenter_));
   if (with_geometry) {
-    std::printf(" and %d geometry layers from the current depth and normal maps",
-                core::kNumGeometryLayers);
+    std::printf(" and %d geometry layer%s from the current depth and normal maps",
+                core::kNumGeometryLayers, core::kNumGeometryLayers == 1 ? "" : "s");
   }
   std::printf("\n");
 }
@@ -142,12 +142,18 @@ std::vector<uint8_t> PriorDriver::Run(const PriorPassInput& input) {
   const bool with_geometry = options_.geometry_layers && !FromMaskFiles(input.view) &&
                              input.geometry_depth != nullptr && input.geometry_normal != nullptr;
   LogSources(input.view, round_layers.NumLevels(), with_geometry);
+  if (with_geometry && (input.geometry_depth->width != input.color->width ||
+                        input.geometry_depth->height != input.color->height ||
+                        input.geometry_normal->width != input.color->width ||
+                        input.geometry_normal->height != input.color->height)) {
+    throw std::logic_error("PriorDriver::Run: depth, normal and colour maps differ in size");
+  }
   const auto geometry_start = std::chrono::steady_clock::now();
   LabelLayers all_layers;
   if (with_geometry) {
-    all_layers = AppendLayers(round_layers, SegmentGeometry(*input.geometry_depth,
-                                                            *input.geometry_normal, segmenter_,
-                                                            options_.num_threads));
+    all_layers =
+        AppendLayers(round_layers, SegmentGeometry(*input.geometry_depth, *input.geometry_normal,
+                                                   segmenter_, options_.num_threads));
   }
   const double geometry_seconds = SecondsSince(geometry_start);
   const SegmentationPriorResult result =

@@ -2,11 +2,11 @@
 // reference image and round, the label layers at the round's resolution (the
 // user's mask layers resampled, or the embedded segmenter on the colour
 // image); per deformable pass, with the embedded layers, the geometry layers
-// of the current depth and normal maps (geometry_layers.h); then edge aggregation of the layers by the anchors
-// of the unreliable pixels (eqs. 4-5) or, switched off, the union of their
-// boundaries, then CRF refinement (eq. 6) on colour and the current depth.
-// The edges, packed into one byte per pixel (the form PixelState keeps them
-// in between passes), confine the anchor search of the following passes.
+// of the current depth and normal maps (geometry_layers.h); then edge aggregation of the layers by
+// the anchors of the unreliable pixels (eqs. 4-5) or, switched off, the union of their boundaries,
+// then CRF refinement (eq. 6) on colour and the current depth. The edges, packed into one byte per
+// pixel (the form PixelState keeps them in between passes), confine the anchor search of the
+// following passes.
 #pragma once
 
 #include <cstdint>

@@ -87,8 +87,8 @@ int BoundaryPixels(const std::vector<int32_t>& labels) {
 TEST(GeometryLayers, ABoxOfTheWallsColourHasADepthEdgeOnlyInTheGeometryLayers) {
   const GeometryMaps maps = WallWithBox();
   // The box and the wall have the same colour (grey with sensor noise).
-  const DenseMap color = test::TwoColourImage(kWidth, kHeight, 0, {0.5f, 0.5f, 0.5f},
-                                              {0.5f, 0.5f, 0.5f}, 0.02f, 3);
+  const DenseMap color =
+      test::TwoColourImage(kWidth, kHeight, 0, {0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}, 0.02f, 3);
   for (Segmenter s : kSegmenters) {
     SCOPED_TRACE(SegmenterName(s));
     const LabelLayers colour = SegmentMultiscale(color, 3, s);

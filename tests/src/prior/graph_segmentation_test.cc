@@ -83,8 +83,8 @@ TEST(GraphSegmentation, FeatureImagesOfAnyChannelCountAtSeveralScales) {
 }
 
 TEST(GraphSegmentation, Deterministic) {
-  const DenseMap image = test::TwoColourImage(kWidth, kHeight, 20, {0.5f, 0.5f, 0.5f},
-                                              {0.45f, 0.5f, 0.55f}, 0.1f, 9);
+  const DenseMap image =
+      test::TwoColourImage(kWidth, kHeight, 20, {0.5f, 0.5f, 0.5f}, {0.45f, 0.5f, 0.55f}, 0.1f, 9);
   const GraphSegmentationScale scale = SegmentationScale(2, 3, kWidth, kHeight);
   for (Segmenter s : kSegmenters) {
     EXPECT_EQ(SegmentGraph(image, scale, s), SegmentGraph(image, scale, s)) << SegmenterName(s);

@@ -163,7 +163,8 @@ MSP_HD int CollectAnchorHits(const AnchorMaps& maps, int col, int row, const Anc
   SectorRays sectors;
   if (params.equidistribution) {
     EquidistributedSectorRays(maps, col, row, params.max_distance,
-                              params.equidistribution_iterations, params.rays_per_sector, &sectors);
+                              params.equidistribution_iterations, RecutWhere::kSomeSectorClosed,
+                              params.rays_per_sector, &sectors);
   } else {
     FixedSectorRays(params.rays_per_sector, &sectors);
   }

@@ -138,18 +138,34 @@ MSP_HD void CountBetweenRays(const BoundaryPixel* rays, int n, CumulativeCount* 
   }
 }
 
+// Which pixels get re-cut sectors. Re-cutting where every fixed sector
+// already reaches reliable pixels equalises counts but moves the anchors off
+// the directions that enclose p: on the bundled scene (320x240, 6 views, 3
+// seeds) it cost 0.10 of fused accuracy at 2 % against fixed sectors, while
+// re-cutting only where a depth edge or the border closes a sector (the case
+// eq. 7 is for) is level with them.
+enum class RecutWhere { kEverywhere, kSomeSectorClosed };
+
+// True when every sector counts reliable pixels: no sector is closed.
+MSP_HD bool AllSectorsOpen(const CumulativeCount& count) {
+  for (int i = 0; i < count.n; ++i) {
+    if (!(count.counts[i] > 0.0f)) return false;
+  }
+  return true;
+}
+
 // The 8 sector boundaries of p after `iterations` re-cuts (eq. 7), in
 // increasing angle within [boundaries[0], boundaries[0] + 360), and the
-// cumulative count of the last re-cut. Each iteration casts boundary rays at
+// cumulative count of the last re-cut; with kSomeSectorClosed, only when a
+// fixed sector counts nothing. Each iteration casts boundary rays at
 // the current boundaries (the fixed sectors' boundaries first) and re-cuts
 // from all boundary rays cast so far. (Re-estimating from the 8 newest rays
 // alone, as a literal reading has it, forgets what the earlier rays found: a
 // new sector whose two ends are reliable but which spans a range found closed
 // counts as full again, and the re-cuts swing back and forth.) Returns false,
-// with the fixed sectors' boundaries, when no sector ever counted a reliable
-// pixel.
+// with the fixed sectors' boundaries, when no re-cut took place.
 MSP_HD bool EquidistributedBoundaries(const AnchorMaps& maps, int col, int row, int max_distance,
-                                      int iterations, float* boundaries,
+                                      int iterations, RecutWhere recut_where, float* boundaries,
                                       CumulativeCount* cumulative) {
   if (iterations > kMaxEquidistributionIterations) iterations = kMaxEquidistributionIterations;
   BoundaryPixel cast[kMaxBoundaryRays];
@@ -164,6 +180,7 @@ MSP_HD bool EquidistributedBoundaries(const AnchorMaps& maps, int col, int row, 
     CumulativeCount count;
     CountBetweenRays(cast, n, &count);
     if (!(count.total > 0.0f)) break;  // keeps the last boundaries
+    if (it == 0 && recut_where == RecutWhere::kSomeSectorClosed && AllSectorsOpen(count)) break;
     *cumulative = count;
     EquidistributeAngles(count.start, count.counts, count.n, count.total, boundaries);
     recut = true;
@@ -175,14 +192,15 @@ MSP_HD bool EquidistributedBoundaries(const AnchorMaps& maps, int col, int row, 
 // with its rays spread evenly in angle over its span, as in a fixed sector. A
 // new sector's span may hold a range the boundary rays found closed; its rays
 // still look there, since a closed boundary ray closes only its own
-// direction. Returns false (and the fixed sectors) when no sector ever
-// counted a reliable pixel.
+// direction. Returns false (and the fixed sectors) when no re-cut took place.
 MSP_HD bool EquidistributedSectorRays(const AnchorMaps& maps, int col, int row, int max_distance,
-                                      int iterations, int rays_per_sector, SectorRays* out) {
+                                      int iterations, RecutWhere recut_where, int rays_per_sector,
+                                      SectorRays* out) {
   const int rays = ClampRaysPerSector(rays_per_sector);
   float boundaries[kNumSectors];
   CumulativeCount count;
-  if (!EquidistributedBoundaries(maps, col, row, max_distance, iterations, boundaries, &count)) {
+  if (!EquidistributedBoundaries(maps, col, row, max_distance, iterations, recut_where,
+                                 boundaries, &count)) {
     FixedSectorRays(rays, out);
     return false;
   }

@@ -241,7 +241,8 @@ TEST(Equidistribution, IteratedSectorsFaceEqualCounts) {
     float boundaries[kNumSectors];
     CumulativeCount count;
     ASSERT_TRUE(
-        EquidistributedBoundaries(maps, kCol, kRow, kMaxDistance, iterations, boundaries, &count));
+        EquidistributedBoundaries(maps, kCol, kRow, kMaxDistance, iterations,
+                                  RecutWhere::kEverywhere, boundaries, &count));
     spread[iterations] = Spread(FrontCounts(maps, boundaries, everywhere));
   }
   // Measured: fixed 0.55; 0.23, 0.13, 0.10 after 1, 2, 3 re-cuts (a sector
@@ -252,6 +253,24 @@ TEST(Equidistribution, IteratedSectorsFaceEqualCounts) {
   EXPECT_LT(spread[3], 0.12);
   EXPECT_LT(spread[3], spread[2]);
   EXPECT_LT(spread[2], spread[1]);
+}
+
+// Where every fixed sector reaches reliable pixels, only kEverywhere re-cuts:
+// the layout of IteratedSectorsFaceEqualCounts keeps the fixed sectors with
+// kSomeSectorClosed.
+TEST(Equidistribution, OpenSectorsKeptWhereNoneIsClosed) {
+  Layout layout;
+  layout.Fill([](int dx, int dy) { return (dx - 15) * (dx - 15) + dy * dy > 30 * 30; });
+  SectorRays fixed, rays;
+  std::memset(&fixed, 0, sizeof(fixed));
+  std::memset(&rays, 0, sizeof(rays));
+  FixedSectorRays(2, &fixed);
+  EXPECT_FALSE(EquidistributedSectorRays(layout.Maps(), kCol, kRow, kMaxDistance, 2,
+                                         RecutWhere::kSomeSectorClosed, 2, &rays));
+  EXPECT_EQ(std::memcmp(&rays, &fixed, sizeof(SectorRays)), 0);
+  EXPECT_TRUE(EquidistributedSectorRays(layout.Maps(), kCol, kRow, kMaxDistance, 2,
+                                        RecutWhere::kEverywhere, 2, &rays));
+  EXPECT_NE(std::memcmp(&rays, &fixed, sizeof(SectorRays)), 0);
 }
 
 // Reliable pixels outside a circle of radius 25 around p, and a depth edge
@@ -269,7 +288,8 @@ TEST(Equidistribution, SectorsClosedByAnEdgeGetNoWidth) {
   float boundaries[kNumSectors];
   CumulativeCount count;
   ASSERT_TRUE(EquidistributedBoundaries(maps, kCol, kRow, kMaxDistance,
-                                        kDefaultEquidistributionIterations, boundaries, &count));
+                                        kDefaultEquidistributionIterations,
+                                        RecutWhere::kSomeSectorClosed, boundaries, &count));
   const auto in_counted_range = [](double degrees) { return std::fabs(degrees) < 112.5; };
   for (int k = 0; k < kNumSectors; ++k) {
     EXPECT_TRUE(std::fabs(Wrap(boundaries[k], -180.0)) <= 112.5 + 1e-3) << boundaries[k];
@@ -280,7 +300,8 @@ TEST(Equidistribution, SectorsClosedByAnEdgeGetNoWidth) {
   // lie inside its span.
   SectorRays rays;
   ASSERT_TRUE(EquidistributedSectorRays(maps, kCol, kRow, kMaxDistance,
-                                        kDefaultEquidistributionIterations, 4, &rays));
+                                        kDefaultEquidistributionIterations,
+                                        RecutWhere::kSomeSectorClosed, 4, &rays));
   int wide = 0;
   for (int k = 0; k < kNumSectors; ++k) {
     const double span = 2.0 * std::acos(rays.min_cos[k]) * 180.0 / kPi;
@@ -332,12 +353,14 @@ TEST(Equidistribution, NoCountKeepsTheFixedSectors) {
   Layout empty;
   empty.Fill([](int, int) { return false; });
   std::memset(&rays, 0, sizeof(rays));
-  EXPECT_FALSE(EquidistributedSectorRays(empty.Maps(), kCol, kRow, kMaxDistance, 2, 2, &rays));
+  EXPECT_FALSE(EquidistributedSectorRays(empty.Maps(), kCol, kRow, kMaxDistance, 2,
+                                         RecutWhere::kEverywhere, 2, &rays));
   EXPECT_TRUE(same(rays));
 
   const Layout walled = RadialWalls(BoundaryWalls());
   std::memset(&rays, 0, sizeof(rays));
-  EXPECT_FALSE(EquidistributedSectorRays(walled.Maps(), kCol, kRow, kMaxDistance, 2, 2, &rays));
+  EXPECT_FALSE(EquidistributedSectorRays(walled.Maps(), kCol, kRow, kMaxDistance, 2,
+                                         RecutWhere::kEverywhere, 2, &rays));
   EXPECT_TRUE(same(rays));
   // The anchor search then finds the same hits as without equidistribution.
   AnchorParams params = DefaultAnchorParams(0, kDepthRange, kMaxDistance);

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <vector>
+#include <opencv2/imgproc.hpp>
 
 namespace msp {
 namespace eval {
@@ -52,37 +52,18 @@ bool AlikeSides(const DenseMap& gt, const cv::Mat& image, int r0, int c0, int dr
   return std::sqrt(sq) < kAlikeColourDistance;
 }
 
-// Square dilation of a 0/1 mask by `radius` (separable running maximum).
-std::vector<uint8_t> Dilate(const std::vector<uint8_t>& mask, int width, int height, int radius) {
-  std::vector<uint8_t> rows(mask.size(), 0), out(mask.size(), 0);
-  for (int r = 0; r < height; ++r) {
-    for (int c = 0; c < width; ++c) {
-      if (!mask[static_cast<size_t>(r) * width + c]) continue;
-      const int lo = std::max(0, c - radius), hi = std::min(width - 1, c + radius);
-      std::fill(rows.begin() + static_cast<size_t>(r) * width + lo,
-                rows.begin() + static_cast<size_t>(r) * width + hi + 1, 1);
-    }
-  }
-  for (int r = 0; r < height; ++r) {
-    for (int c = 0; c < width; ++c) {
-      if (!rows[static_cast<size_t>(r) * width + c]) continue;
-      const int lo = std::max(0, r - radius), hi = std::min(height - 1, r + radius);
-      for (int rr = lo; rr <= hi; ++rr) out[static_cast<size_t>(rr) * width + c] = 1;
-    }
-  }
-  return out;
-}
-
-cv::Mat ToMask(const std::vector<uint8_t>& band, const DenseMap& gt) {
-  cv::Mat mask(gt.height, gt.width, CV_8UC1, cv::Scalar(0));
+// The pixels within `radius` (Chebyshev distance) of a marked pixel, kept
+// where the ground truth has depth: 255 inside.
+cv::Mat Band(const cv::Mat& marks, const DenseMap& gt, int radius) {
+  cv::Mat band;
+  cv::dilate(marks, band,
+             cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * radius + 1, 2 * radius + 1)));
   for (int r = 0; r < gt.height; ++r) {
     for (int c = 0; c < gt.width; ++c) {
-      if (band[static_cast<size_t>(r) * gt.width + c] && HasDepth(gt.At(r, c))) {
-        mask.at<uint8_t>(r, c) = 255;
-      }
+      if (!HasDepth(gt.At(r, c))) band.at<uint8_t>(r, c) = 0;
     }
   }
-  return mask;
+  return band;
 }
 
 }  // namespace
@@ -96,7 +77,7 @@ int EdgeBandRadius(int gt_width, int gt_height, int map_width, int map_height) {
 
 EdgeRegions FindEdgeRegions(const DenseMap& gt_depth, const cv::Mat& image, int band_radius) {
   const int w = gt_depth.width, h = gt_depth.height;
-  std::vector<uint8_t> edge(static_cast<size_t>(w) * h, 0), alike(edge.size(), 0);
+  cv::Mat edge(h, w, CV_8UC1, cv::Scalar(0)), alike(h, w, CV_8UC1, cv::Scalar(0));
   for (int r = 0; r < h; ++r) {
     for (int c = 0; c < w; ++c) {
       const float d = gt_depth.At(r, c);
@@ -108,15 +89,16 @@ EdgeRegions FindEdgeRegions(const DenseMap& gt_depth, const cv::Mat& image, int 
         if (r1 >= h || c1 >= w) continue;
         const float d1 = gt_depth.At(r1, c1);
         if (!HasDepth(d1) || !IsDepthJump(d, d1)) continue;
-        const size_t i0 = static_cast<size_t>(r) * w + c, i1 = static_cast<size_t>(r1) * w + c1;
-        edge[i0] = edge[i1] = 1;
-        if (AlikeSides(gt_depth, image, r, c, step[0], step[1])) alike[i0] = alike[i1] = 1;
+        edge.at<uint8_t>(r, c) = edge.at<uint8_t>(r1, c1) = 255;
+        if (AlikeSides(gt_depth, image, r, c, step[0], step[1])) {
+          alike.at<uint8_t>(r, c) = alike.at<uint8_t>(r1, c1) = 255;
+        }
       }
     }
   }
   EdgeRegions regions;
-  regions.near_edge = ToMask(Dilate(edge, w, h, band_radius), gt_depth);
-  regions.alike_edge = ToMask(Dilate(alike, w, h, band_radius), gt_depth);
+  regions.near_edge = Band(edge, gt_depth, band_radius);
+  regions.alike_edge = Band(alike, gt_depth, band_radius);
   return regions;
 }
 

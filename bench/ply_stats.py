@@ -1,7 +1,11 @@
 #!/usr/bin/python3
 """Point count, optional bounding-box share and a rendered view of a fused.ply.
 
-    ply_stats.py fused.ply [--bbox x0 y0 z0 x1 y1 z1 [--margin 0.005]] [--render out.png]
+    ply_stats.py fused.ply [--bbox x0 y0 z0 x1 y1 z1 [--margin 0.005] [--voxel 0.002]]
+                 [--render out.png]
+
+--voxel counts the occupied cubes of that side inside the box: a coverage
+figure that, unlike the point count, does not grow with points piled up.
 
 The rendering looks along the cloud's smallest principal axis (orthographic,
 nearest point wins, 2x2 splats), shaded by the points' normals (brighter =
@@ -51,6 +55,7 @@ def main():
     parser.add_argument("ply")
     parser.add_argument("--bbox", type=float, nargs=6)
     parser.add_argument("--margin", type=float, default=0.005)
+    parser.add_argument("--voxel", type=float)
     parser.add_argument("--render")
     args = parser.parse_args()
     xyz, normals = read_ply(args.ply)
@@ -60,6 +65,9 @@ def main():
         hi = np.array(args.bbox[3:]) + args.margin
         inside = np.all((xyz >= lo) & (xyz <= hi), 1)
         print(f"inside bbox (+{args.margin} m): {inside.sum()} = {100.0 * inside.mean():.1f} %")
+        if args.voxel:
+            cells = np.floor((xyz[inside] - lo) / args.voxel).astype(np.int64)
+            print(f"occupied voxels inside bbox ({args.voxel} m): {len(np.unique(cells, axis=0))}")
     if args.render and len(xyz):
         render(xyz, normals, args.render)
         print(f"rendered view: {args.render}")

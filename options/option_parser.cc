@@ -194,6 +194,10 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
   MSP_ADD_OPTION(t, *m, finest_deformable,
                  "With several rounds, the finest round also runs the deformable step; false = "
                  "conventional sweeps there (the coarser rounds found the textureless planes).");
+  MSP_ADD_OPTION(t, *m, weighted_views_only,
+                 "With several rounds, the finest round scores propagation candidates only on "
+                 "the views the pixel selected last (carried up from the coarser rounds), not on "
+                 "every source view; false = every source view.");
   MSP_ADD_OPTION(t, *m, joint_bilateral_upsampling,
                  "Carry each pixel's plane up to the next round from the coarse pixel among the "
                  "3x3 around it that a joint-bilateral vote guided by the image picks (ACMM), so "

@@ -98,6 +98,9 @@ struct MspStereoOptions {
   int finest_iterations = 1;
   // The finest round of a run with several rounds runs the deformable step; false = conventional.
   bool finest_deformable = false;
+  // In the finest round of a run with several rounds, propagation candidates are scored only on
+  // the views of the pixel's last selection (the views that carry its weight); false = on all.
+  bool weighted_views_only = false;
   // Carry planes up a round by an image-guided joint-bilateral vote (ACMM); false = nearest.
   bool joint_bilateral_upsampling = true;
   // Pixel step between window samples, 1 or 2 (paper: 2); replaces --PatchMatchStereo.window_step.

@@ -31,6 +31,8 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
   const bool round_deformable = msp.deformable && (!restoring || msp.finest_deformable);
   const bool deformable = round_deformable && !first;
   if (restoring) pass.iterations = msp.finest_iterations;
+  // The selections the coarser rounds settled carry up with the planes.
+  pass.weighted_views_only = restoring && msp.weighted_views_only;
   pass.sweeps = deformable ? PassSweeps::kDeformable : PassSweeps::kCheckerboard;
   // A round's first pass classifies with the thresholds after the coarser
   // round's last pass; the others take the classes of the previous refine.
@@ -99,6 +101,7 @@ std::string ToString(const Pass& pass) {
                   " " + KindName(pass.kind) + " (id " + std::to_string(pass.id) + "): ";
   s += StartName(pass.start);
   s += "; " + std::to_string(pass.iterations) + " x " + SweepsName(pass);
+  if (pass.weighted_views_only) s += " on the selected views";
   s += pass.refine_classifies ? "; refine + classify" : "; refine";
   if (pass.segment_planes) s += "; segment planes";
   if (pass.prior) s += "; prior";

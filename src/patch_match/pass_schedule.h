@@ -55,6 +55,8 @@ struct Pass {
   PassStart start = PassStart::kRandom;
   PassSweeps sweeps = PassSweeps::kCheckerboard;
   int iterations = kIterationsPerPass;
+  // Propagation scores only the views of each pixel's last selection.
+  bool weighted_views_only = false;
   // kDeformable: -1 = the classes come from the previous pass's local
   // refinement; else the state is classified at the start with the
   // thresholds after this pass of a round (core::DefaultReliabilityParams).

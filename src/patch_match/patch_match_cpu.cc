@@ -192,6 +192,7 @@ class CpuRunner {
     p.seed = static_cast<uint32_t>(msp_.seed);
     p.image_id = static_cast<uint32_t>(problem.ref);
     p.pass_id = pass.id;
+    p.weighted_views_only = pass.weighted_views_only ? 1 : 0;
     p.state = state.View();
     return p;
   }

@@ -78,6 +78,7 @@ struct PassParams {
   uint32_t seed;
   uint32_t image_id;
   uint32_t pass_id;
+  int weighted_views_only;  // 1: propagation scores only the views of the last selection
   PixelStateView state;
 };
 
@@ -285,16 +286,24 @@ MSP_HD void CandidateWindowCosts(const PassParams& p, const RefWindow& w, int j,
   WindowNccCosts(w, p.ref_image, p.src[j].image, H, lanes, p.ncc, ncc);
 }
 
-// ViewCosts in every view of up to kWindowLanes hypotheses h[k] (the rows of
-// `costs`, kMaxSourceViews apart); rows whose `has` is false cost kMaxCost.
-// One view at a time, the window is scored under all of them at once
-// (WindowNccCosts); the geometric terms come first, as in ViewCosts.
+// Every view of the pass.
+constexpr uint32_t kAllViews = 0xFFFFFFFFu;
+
+// ViewCosts in the views of `views` (bit j = view j) of up to kWindowLanes
+// hypotheses h[k] (the rows of `costs`, kMaxSourceViews apart); rows whose
+// `has` is false, and views outside `views`, cost kMaxCost. One view at a
+// time, the window is scored under all of them at once (WindowNccCosts); the
+// geometric terms come first, as in ViewCosts.
 MSP_HD void CandidateViewCosts(const PassParams& p, const RefWindow& w, const PlaneHypothesis* h,
-                               const bool* has, int num, float* costs) {
+                               const bool* has, int num, uint32_t views, float* costs) {
   PreparedPlane planes[kWindowLanes];
   float geometric[kWindowLanes][kMaxSourceViews];
   const uint32_t lanes = PrepareCandidates(p, w, h, has, num, planes, geometric);
   for (int j = 0; j < p.num_src; ++j) {
+    if (!((views >> j) & 1u)) {
+      for (int k = 0; k < num; ++k) costs[k * kMaxSourceViews + j] = kMaxCost;
+      continue;
+    }
     Mat3 H[kWindowLanes];
     float ncc[kWindowLanes];
     CandidateWindowCosts(p, w, j, planes, lanes, num, H, ncc);
@@ -439,7 +448,12 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
   RefWindow w;
   PrepareWindow(p, col, row, &w);
   // The propagated candidates in every view: view selection reads them all.
-  CandidateViewCosts(p, w, cand, has, kNumPropagationCandidates, costs);
+  // Once the selection has settled, only its views: a view outside it costs
+  // kMaxCost, a mismatch that view selection never draws. Where every scored
+  // view mismatches, selection falls back to all views, and the next
+  // iteration scores all of them again.
+  const uint32_t scored = p.weighted_views_only && s.mask[i] != 0u ? s.mask[i] : kAllViews;
+  CandidateViewCosts(p, w, cand, has, kNumPropagationCandidates, scored, costs);
   Rng select_rng =
       MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamSelect, pixel));
   float weights[kMaxSourceViews];

@@ -215,6 +215,57 @@ TEST(UpdatePixel, StoredCostIsAMeanOfTheSelectedViews) {
   EXPECT_GT(both, 20);  // both views were selected at most pixels
 }
 
+// Two sources that both see the plane, and view 0 alone selected last time.
+// With weighted_views_only the candidates are scored on view 0 only, so the
+// selection stays {0} and the stored cost is view 0's; scoring every view,
+// view selection draws view 1 again at some pixels.
+TEST(UpdatePixel, WeightedViewsOnlyScoresTheLastSelection) {
+  for (const int weighted_views_only : {0, 1}) {
+    test::PlaneScene s;
+    MakeScoredScene(&s);
+    test::AddSourceView(test::MirroredSourceCamera(), &s);
+    s.params.weighted_views_only = weighted_views_only;
+    const PassParams& p = s.params;
+    ScoreAll(p);
+    for (uint32_t& m : s.state_mask) m = 1u;
+    int redrawn = 0;
+    for (int row = 40; row <= 110; row += 10) {
+      for (int col = 50; col <= 150; col += 20) {
+        UpdatePixel(p, col, row, /*iteration=*/1);
+        const uint32_t mask = p.state.mask[p.state.Index(col, row)];
+        redrawn += (mask & 2u) != 0u;
+        if (weighted_views_only) {
+          EXPECT_EQ(mask, 1u) << col << "," << row;
+          const PlaneHypothesis h = PlaneAt(p, col, row);
+          EXPECT_NEAR(StoredCost(p, col, row), test::ConventionalViewCost(p, 0, col, row, h),
+                      1e-5f)
+              << col << "," << row;
+        }
+      }
+    }
+    if (!weighted_views_only) EXPECT_GT(redrawn, 0);
+  }
+}
+
+// The last selection holds only a view that matches nothing (the plane's
+// negative): every scored view mismatches, view selection falls back to all
+// views, and the pixel's next update scores all of them again.
+TEST(UpdatePixel, WeightedViewsOnlyFallsBackToAllViewsWhenTheSelectionFails) {
+  test::PlaneScene s;
+  MakeScoredScene(&s);
+  test::AddSourceView(test::MirroredSourceCamera(), &s);
+  for (float& v : s.src_images.back().data) v = 1.0f - v;
+  s.params.weighted_views_only = 1;
+  const PassParams& p = s.params;
+  ScoreAll(p);
+  for (uint32_t& m : s.state_mask) m = 2u;  // the negative view alone
+  UpdatePixel(p, kCol, kRow, /*iteration=*/1);
+  EXPECT_EQ(p.state.mask[p.state.Index(kCol, kRow)], 3u);
+  UpdatePixel(p, kCol, kRow, /*iteration=*/2);
+  EXPECT_EQ(p.state.mask[p.state.Index(kCol, kRow)], 1u);  // the matching view, found again
+  EXPECT_NEAR(PlaneAt(p, kCol, kRow).depth, kDepth, 0.01f * kDepth);
+}
+
 }  // namespace
 }  // namespace core
 }  // namespace msp

@@ -74,6 +74,29 @@ TEST(PassSchedule, DefaultOptionsRestoreDetailInTheFinestRound) {
   EXPECT_EQ(Printed(PatchMatchStereoOptions(), MspStereoOptions()), round1 + round2 + round3);
 }
 
+// weighted_views_only narrows the propagation of the finest round only,
+// whose selections the coarser rounds settled; never with one round.
+TEST(PassSchedule, WeightedViewsOnlyInTheFinestRound) {
+  MspStereoOptions msp;
+  msp.weighted_views_only = true;
+  const std::vector<Pass> schedule =
+      BuildPassSchedule(PatchMatchStereoOptions(), msp, kSceneWidth, kSceneHeight);
+  ASSERT_EQ(schedule.size(), 12u);
+  for (const Pass& pass : schedule) {
+    EXPECT_EQ(pass.weighted_views_only, pass.round == 2) << ToString(pass);
+  }
+  EXPECT_NE(Printed(PatchMatchStereoOptions(), msp).find(
+                "round 3/3 (scale 1/1), pass 1 photometric (id 16): upsampled state; 1 x "
+                "checkerboard on the selected views;"),
+            std::string::npos);
+  MspStereoOptions one_round = OneRound();
+  one_round.weighted_views_only = true;
+  for (const Pass& pass : BuildPassSchedule(PatchMatchStereoOptions(), one_round, kSceneWidth,
+                                            kSceneHeight)) {
+    EXPECT_FALSE(pass.weighted_views_only);
+  }
+}
+
 TEST(PassSchedule, WithoutGeometricConsistencyOnePassWritesTheFinalMaps) {
   PatchMatchStereoOptions pm;
   pm.geom_consistency = false;

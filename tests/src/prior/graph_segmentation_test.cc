@@ -51,8 +51,12 @@ TEST(GraphSegmentation, BothSegmentersGiveValidLabelMaps) {
     for (const auto& region : sizes) EXPECT_GE(region.second, scale.min_size);
     for (int row = 0; row < kHeight; ++row) {
       for (int col = 0; col < kWidth; ++col) {
-        if (col < kEdge - kStrip) EXPECT_EQ(labels[row * kWidth + col], labels[0]);
-        if (col >= kEdge + kStrip) EXPECT_EQ(labels[row * kWidth + col], labels[kWidth - 1]);
+        if (col < kEdge - kStrip) {
+          EXPECT_EQ(labels[row * kWidth + col], labels[0]);
+        }
+        if (col >= kEdge + kStrip) {
+          EXPECT_EQ(labels[row * kWidth + col], labels[kWidth - 1]);
+        }
       }
     }
     EXPECT_NE(labels[0], labels[kWidth - 1]);

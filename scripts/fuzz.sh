@@ -36,6 +36,9 @@ case "$SECONDS_EACH" in
 esac
 
 mkdir -p "$BUILD/artifacts"
+# The targets write each input to a file (the readers take paths): in a RAM
+# folder when there is one, so the disk is not the bottleneck.
+if [ -d /dev/shm ] && [ -w /dev/shm ]; then export TMPDIR=/dev/shm; fi
 for target in "${TARGETS[@]}"; do
   [ -d "fuzz/corpus/$target" ] || { echo "ERROR: no seed corpus fuzz/corpus/$target" >&2; exit 1; }
   mkdir -p "$BUILD/corpus/$target"

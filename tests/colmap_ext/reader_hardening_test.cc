@@ -7,8 +7,11 @@
 #include <string>
 
 #include "colmap_ext/mask_layers.h"
+#include "colmap_ext/patch_match_config.h"
+#include "colmap_ext/sparse_model.h"
 #include "tests/support/error_message.h"
 #include "tests/support/files.h"
+#include "tests/support/sparse_models.h"
 #include "tests/support/temp_dir.h"
 
 namespace msp {
@@ -37,6 +40,26 @@ TEST(ReaderHardening, MaskLayerDeclaringAHugeImageIsRefusedFromItsHeader) {
   EXPECT_NE(message.find(path + ": mask layer is 40000x20000 but its image a.png is 16x12"),
             std::string::npos)
       << message;
+}
+
+// A 3.2 MB points3D.bin whose one point lists two images 400000 times: the
+// __auto__ ranking took every pair of track elements one by one (8e10 pairs,
+// a hang and hundreds of GB); it now counts the pairs per pair of images.
+TEST(ReaderHardening, ATrackRepeatingImagesDoesNotHangTheSourceRanking) {
+  constexpr int kRepeats = 200000;
+  SparseModel model;
+  model.cameras = {test::MakeSparseCamera(1, kSimplePinhole, 100, 100, {100, 50, 50})};
+  model.images = {test::ImageAt(1, 0, 0, -10), test::ImageAt(2, 3, 0, -10)};
+  SparsePoint3D point = test::PointAt(1, 0, 0, 0, {});
+  for (int i = 0; i < kRepeats; ++i) {
+    point.track.push_back({1, 0});
+    point.track.push_back({2, 0});
+  }
+  model.points3D = {point};
+  TempDir dir;
+  WriteSparseModelBinary(model, dir.path());
+  const SparseModel read = ReadSparseModel(dir.path());
+  EXPECT_EQ(SelectAutoSources(read, 0, 5, 1.0), (std::vector<int>{1}));
 }
 
 }  // namespace

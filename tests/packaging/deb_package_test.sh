@@ -38,10 +38,11 @@ done
 help=$("$BIN/msp_stereo" --help 2>&1); rc=$?
 expect_eq "msp_stereo --help exits 0" "$rc" "0"
 expect_contains "msp_stereo --help prints the usage" "$help" "Usage: msp_stereo"
-# The dispatcher finds the msp_stereo next to it, not one on PATH.
-help=$(env -u MSP_STEREO PATH="$BIN:/usr/bin:/bin" "$BIN/colmap" msp_stereo --help 2>&1); rc=$?
+# The dispatcher, called by its path with only the system on PATH, finds
+# the msp_stereo next to it and the real colmap in /usr/bin.
+help=$(env -u MSP_STEREO PATH=/usr/bin:/bin "$BIN/colmap" msp_stereo --help 2>&1); rc=$?
 expect_eq "colmap msp_stereo --help exits 0" "$rc" "0"
 expect_contains "colmap msp_stereo --help is msp_stereo's" "$help" "Usage: msp_stereo"
-help=$(env -u MSP_STEREO PATH="$BIN:/usr/bin:/bin" "$BIN/colmap" --help 2>&1)
+help=$(env -u MSP_STEREO PATH=/usr/bin:/bin "$BIN/colmap" --help 2>&1)
 expect_contains "colmap --help lists msp_stereo" "$help" "msp_stereo"
 finish

@@ -1,7 +1,7 @@
-// Inputs that once made a reader crash, hang or allocate without bound (found
-// by the fuzz targets in fuzz/ or by reading the code), kept as bytes: each
-// must now stop with an InputError naming the file, before any large
-// allocation.
+// Inputs that once made a reader, or what is computed from what it read,
+// crash, hang or allocate without bound (found by the fuzz targets in fuzz/
+// or by reading the code), as bytes or built here: each must now stop with an
+// InputError naming the file before any large allocation, or finish quickly.
 #include <gtest/gtest.h>
 
 #include <string>

@@ -1,5 +1,8 @@
 #include "colmap_ext/mask_layers.h"
 
+#include <algorithm>
+#include <cstdint>
+#include <fstream>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
@@ -37,7 +40,40 @@ std::string NameList(const std::vector<std::string>& names) {
   return text;
 }
 
+[[noreturn]] void ThrowSizeMismatch(const std::string& path, uint64_t width, uint64_t height,
+                                    const MaskImage& image) {
+  throw InputError(path + ": mask layer is " + std::to_string(width) + "x" +
+                   std::to_string(height) + " but its image " + image.name + " is " +
+                   std::to_string(image.width) + "x" + std::to_string(image.height) +
+                   " (masks must be made from the undistorted images)");
+}
+
+uint32_t BigEndian32(const unsigned char* bytes) {
+  return (uint32_t{bytes[0]} << 24) | (uint32_t{bytes[1]} << 16) | (uint32_t{bytes[2]} << 8) |
+         uint32_t{bytes[3]};
+}
+
+// The size in the PNG header (IHDR, the first chunk) must be the image's
+// before the file is decoded: the decoder allocates what the header declares,
+// so a corrupt or foreign header could otherwise ask for gigabytes.
+void CheckPngHeader(const std::string& path, const MaskImage& image) {
+  static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  unsigned char header[24] = {};
+  std::ifstream file(path, std::ios::binary);
+  file.read(reinterpret_cast<char*>(header), sizeof(header));
+  if (!file || !std::equal(kSignature, kSignature + 8, header) ||
+      !std::equal(header + 12, header + 16, "IHDR")) {
+    throw InputError(path + ": cannot read mask layer: not a PNG file" + kLayoutHint);
+  }
+  const uint32_t width = BigEndian32(header + 16);
+  const uint32_t height = BigEndian32(header + 20);
+  if (width != static_cast<uint32_t>(image.width) || height != static_cast<uint32_t>(image.height)) {
+    ThrowSizeMismatch(path, width, height, image);
+  }
+}
+
 std::vector<int32_t> ReadLevel(const std::string& path, const MaskImage& image) {
+  CheckPngHeader(path, image);
   cv::Mat mask;
   try {
     mask = cv::imread(path, cv::IMREAD_UNCHANGED);
@@ -51,10 +87,7 @@ std::vector<int32_t> ReadLevel(const std::string& path, const MaskImage& image) 
     throw InputError(path + ": mask layer is a " + TypeName(mask) + " image" + kLayoutHint);
   }
   if (mask.cols != image.width || mask.rows != image.height) {
-    throw InputError(path + ": mask layer is " + std::to_string(mask.cols) + "x" +
-                     std::to_string(mask.rows) + " but its image " + image.name + " is " +
-                     std::to_string(image.width) + "x" + std::to_string(image.height) +
-                     " (masks must be made from the undistorted images)");
+    ThrowSizeMismatch(path, mask.cols, mask.rows, image);
   }
   std::vector<int32_t> labels(static_cast<size_t>(mask.cols) * mask.rows);
   for (int row = 0; row < mask.rows; ++row) {

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <unordered_map>
 #include <utility>
@@ -49,13 +50,33 @@ double TriangulationAngle(const Eigen::Vector3d& center1, const Eigen::Vector3d&
   return std::min(angle, M_PI - angle);
 }
 
-// COLMAP's Percentile: the element at round(p/100 * (n-1)) in sorted order.
-double Percentile(std::vector<double> values, double percentile) {
-  const long long last = static_cast<long long>(values.size()) - 1;
-  const long long idx = std::clamp<long long>(
-      static_cast<long long>(std::round(percentile / 100.0 * static_cast<double>(last))), 0, last);
-  std::nth_element(values.begin(), values.begin() + idx, values.end());
-  return values[idx];
+// The angle of an image pair at one point and the number of track-element
+// pairs that give it: a track listing image a k times and image b m times
+// makes k * m pairs with the same angle. Kept once with its count, a track
+// costs the square of its distinct images, not of its length, so no sparse
+// model (a corrupt one repeating an image a million times) can make the
+// ranking hang or allocate without bound.
+struct WeightedAngle {
+  double angle;
+  int64_t count;
+};
+
+// COLMAP's Percentile (the element at round(p/100 * (n-1)) in sorted order) of
+// the list with every angle repeated `count` times.
+double Percentile(std::vector<WeightedAngle> values, double percentile) {
+  int64_t total = 0;
+  for (const WeightedAngle& value : values) total += value.count;
+  const int64_t idx = std::clamp<int64_t>(
+      static_cast<int64_t>(std::round(percentile / 100.0 * static_cast<double>(total - 1))), 0,
+      total - 1);
+  std::sort(values.begin(), values.end(),
+            [](const WeightedAngle& a, const WeightedAngle& b) { return a.angle < b.angle; });
+  int64_t seen = 0;
+  for (const WeightedAngle& value : values) {
+    seen += value.count;
+    if (seen > idx) return value.angle;
+  }
+  return values.back().angle;
 }
 
 std::unordered_map<uint32_t, int> ImageIndexById(const SparseModel& model) {
@@ -83,9 +104,10 @@ std::vector<std::vector<int>> SelectAutoSourcesBatch(const SparseModel& model,
 
   // Per wanted image, per other image: the angle of every co-observation. As
   // in COLMAP every pair of track elements of distinct images counts, so the
-  // shared point count is the size of the list.
-  std::vector<std::map<int, std::vector<double>>> angles(num_images);
+  // shared point count is the sum of the counts.
+  std::vector<std::map<int, std::vector<WeightedAngle>>> angles(num_images);
   std::vector<int> track;
+  std::vector<std::pair<int, int64_t>> distinct;  // (model index, times in the track)
   for (const SparsePoint3D& point : model.points3D) {
     track.clear();
     bool any_wanted = false;
@@ -96,13 +118,20 @@ std::vector<std::vector<int>> SelectAutoSourcesBatch(const SparseModel& model,
       any_wanted = any_wanted || wanted[it->second];
     }
     if (!any_wanted) continue;
+    std::sort(track.begin(), track.end());
+    distinct.clear();
+    for (const int index : track) {
+      if (distinct.empty() || distinct.back().first != index) distinct.emplace_back(index, 0);
+      ++distinct.back().second;
+    }
     const Eigen::Vector3d X(point.xyz[0], point.xyz[1], point.xyz[2]);
-    for (size_t i = 0; i < track.size(); ++i) {
+    for (size_t i = 0; i < distinct.size(); ++i) {
       for (size_t j = 0; j < i; ++j) {
-        const int a = track[i];
-        const int b = track[j];
-        if (a == b || (!wanted[a] && !wanted[b])) continue;
-        const double angle = TriangulationAngle(centers[a], centers[b], X);
+        const int a = distinct[i].first;
+        const int b = distinct[j].first;
+        if (!wanted[a] && !wanted[b]) continue;
+        const WeightedAngle angle{TriangulationAngle(centers[a], centers[b], X),
+                                  distinct[i].second * distinct[j].second};
         if (wanted[a]) angles[a][b].push_back(angle);
         if (wanted[b]) angles[b][a].push_back(angle);
       }
@@ -112,10 +141,12 @@ std::vector<std::vector<int>> SelectAutoSourcesBatch(const SparseModel& model,
   const double min_angle_rad = min_triangulation_angle_deg * M_PI / 180.0;
   for (size_t ref = 0; ref < num_images; ++ref) {
     if (!wanted[ref]) continue;
-    std::vector<std::pair<int, int>> candidates;  // (model index, shared count)
+    std::vector<std::pair<int, int64_t>> candidates;  // (model index, shared count)
     for (const auto& [other, other_angles] : angles[ref]) {
       if (Percentile(other_angles, kTriangulationAnglePercentile) >= min_angle_rad) {
-        candidates.emplace_back(other, static_cast<int>(other_angles.size()));
+        int64_t shared = 0;
+        for (const WeightedAngle& angle : other_angles) shared += angle.count;
+        candidates.emplace_back(other, shared);
       }
     }
     // More shared points first; ties go to the lower model index (the map

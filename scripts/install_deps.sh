@@ -8,6 +8,8 @@ PACKAGES=(
   libeigen3-dev libopencv-dev libboost-program-options-dev  # libraries
   libopencv-contrib-dev                          # ximgproc: a graph segmenter of the prior
   libgtest-dev libgmock-dev                      # tests
+  clang libclang-rt-14-dev                       # libFuzzer targets of the readers (scripts/fuzz.sh)
+  dpkg-dev                                       # cpack -G DEB: dpkg-shlibdeps finds the runtime libraries
   colmap                                         # stereo_fusion for demos and tests (no CUDA needed)
   python3-numpy python3-opencv                   # bench/ply_stats.py
 )

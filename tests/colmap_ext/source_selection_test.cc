@@ -74,6 +74,27 @@ TEST(SourceSelection, UsesThe75thPercentileAngle) {
   EXPECT_EQ(SelectAutoSources(model, 0, 5, 5.0), (std::vector<int>{}));
 }
 
+// COLMAP counts every pair of track elements of distinct images, so a track
+// listing an image three times shares three points with the reference, and
+// each such pair's angle counts in the percentile.
+TEST(SourceSelection, ATrackRepeatingAnImageCountsEveryElementPair) {
+  SparseModel model = OverlapModel();
+  model.points3D.clear();
+  AddSharedPoints({100, 102}, 2, &model);
+  model.points3D.push_back(PointAt(50, 0, 0, 0, {100, 101, 101, 101}));
+  EXPECT_EQ(SelectAutoSources(model, 0, 5, 1.0), (std::vector<int>{1, 2}));
+
+  // Four far points (~0.17 deg) and one near point (~16.7 deg) listed with
+  // image 2 four times: of the 8 angles the 75th percentile (element 5) is a
+  // near one; counted once per point it would be element 3 of 5, a far one.
+  model.points3D.clear();
+  for (int i = 0; i < 4; ++i) {
+    model.points3D.push_back(PointAt(100 + i, 0, 0, 1000.0 + i, {100, 102}));
+  }
+  model.points3D.push_back(PointAt(200, 0, 0, 0, {100, 102, 102, 102, 102}));
+  EXPECT_EQ(SelectAutoSources(model, 0, 5, 5.0), (std::vector<int>{2}));
+}
+
 TEST(SourceSelection, BatchMatchesSingle) {
   const SparseModel model = OverlapModel();
   const std::vector<std::vector<int>> batch =

@@ -3,9 +3,9 @@
 # uninterrupted run. Sourced with BIN (the build's bin/) and TMP set.
 # Every run: nice, one thread (the machines running CI are shared).
 
-# One coarse-to-fine round of 3 images: about 12 image-passes of half a second.
-SCENE_OPTIONS="--width 160 --height 120 --num_cameras 3 --seed 5"
-STEREO_OPTIONS="--MspStereo.num_threads 1 --MspStereo.seed 7 --MspStereo.coarsest_image_size 160"
+# One coarse-to-fine round of 3 images: 12 image-passes of a fraction of a second.
+SCENE_OPTIONS="--width 128 --height 96 --num_cameras 3 --seed 5"
+STEREO_OPTIONS="--MspStereo.num_threads 1 --MspStereo.seed 7 --MspStereo.coarsest_image_size 128"
 
 fail() {
   echo "FAIL: $*" >&2

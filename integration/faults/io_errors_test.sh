@@ -41,13 +41,13 @@ expect_error() {
   done
 }
 
-# Full disk: the depth map (75 KiB) fits under the limit, the normal map (225 KiB) does not.
+# Full disk: the depth map (48 KiB) fits under the limit, the normal map (144 KiB) does not.
 ws="$TMP/full"
 unfinished "$ws"
 code=0
 command -v prlimit > /dev/null || fail "prlimit (util-linux) is needed"
 # shellcheck disable=SC2086
-prlimit --fsize=153600 "$BIN/msp_stereo" --workspace_path "$ws" $STEREO_OPTIONS \
+prlimit --fsize=100000 "$BIN/msp_stereo" --workspace_path "$ws" $STEREO_OPTIONS \
   > "$ws.log" 2> "$ws.err" || code=$?
 [ "$code" -eq 1 ] || fail "disk full: exit code $code"
 expect_error "$ws" "cannot write $ws/stereo/normal_maps/$lost.photometric.bin: File too large"

@@ -29,6 +29,8 @@ while [ "$i" -le "$NUM_KILLS" ]; do
   echo "kill $i at $delay_ms ms: $(map_files "$TMP/ws" | grep -c '\.bin$' || true) whole map files"
   i=$((i + 1))
 done
+# A kill may come after a run ended (a busy machine ran it faster than the
+# first): at least 20 must hit.
 min_hits=$((NUM_KILLS * 5 / 6))
 [ "$hits" -ge "$min_hits" ] || fail "only $hits of $NUM_KILLS kills hit a running msp_stereo"
 stereo "$TMP/ws" || { cat "$TMP/ws.err"; fail "the run after the kills"; }

@@ -1,7 +1,13 @@
 # Shared by the fault tests: a small generated workspace, runs of the real
 # msp_stereo on it and byte-wise comparisons of the maps with an
-# uninterrupted run. Sourced with BIN (the build's bin/) and TMP set.
+# uninterrupted run. Sourced by a test whose first argument is the build's
+# bin/; sets BIN and a scratch folder TMP, removed at exit (made writable
+# first: a test may leave parts read-only).
 # Every run: nice, one thread (the machines running CI are shared).
+
+BIN=$1
+TMP=$(mktemp -d)
+trap 'chmod -R u+w "$TMP"; rm -rf "$TMP"' EXIT
 
 # One coarse-to-fine round of 3 images: 12 image-passes of a fraction of a second.
 SCENE_OPTIONS="--width 128 --height 96 --num_cameras 3 --seed 5"

@@ -12,9 +12,6 @@
 # file modes dropped (setpriv), so that the modes hold.
 # Usage: io_errors_test.sh <bin_dir>
 set -eu
-BIN=$1
-TMP=$(mktemp -d)
-trap 'chmod -R u+w "$TMP"; rm -rf "$TMP"' EXIT
 . "$(dirname "$0")/common.sh"
 
 reference "$TMP/ref"

@@ -5,10 +5,7 @@
 # maps equal the uninterrupted run's and nothing temporary is left.
 # Usage: kill_test.sh <bin_dir> [num_kills]
 set -eu
-BIN=$1
 NUM_KILLS=${2:-24}
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
 . "$(dirname "$0")/common.sh"
 
 reference "$TMP/ref"

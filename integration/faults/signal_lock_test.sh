@@ -6,9 +6,6 @@
 # maps identical to an uninterrupted run's.
 # Usage: signal_lock_test.sh <bin_dir>
 set -eu
-BIN=$1
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
 . "$(dirname "$0")/common.sh"
 
 reference "$TMP/ref"

@@ -150,19 +150,26 @@ int Run(int argc, char** argv) {
   WarnAboutIgnoredOptions(options);
 
   // Before reading: a second run on the workspace stops at once. A workspace
-  // without stereo/ (possible with --config_path) is locked once it has read.
+  // without stereo/ (possible with --config_path) is locked once it has read;
+  // a back-end that cannot run reads it and stops without creating the lock.
+  bool backend_runs = true;
+  try {
+    CheckBackendCanRun(options.msp);
+  } catch (const std::runtime_error&) {
+    backend_runs = false;
+  }
   std::unique_ptr<WorkspaceLock> lock;
-  if (IsDirectory(JoinPaths(options.workspace_path, "stereo"))) {
+  if (backend_runs && IsDirectory(JoinPaths(options.workspace_path, "stereo"))) {
     lock = LockWorkspace(options.workspace_path);
   }
   std::cout << "Reading workspace " << options.workspace_path << "..." << std::endl;
   const Workspace workspace = LoadWorkspace(options);
-  if (lock == nullptr) lock = LockWorkspace(workspace.path);
   std::cout << "  " << workspace.views.size() << " images, " << workspace.problems.size()
             << " problems" << std::endl;
   // Before the first file is written: a back-end that cannot run leaves the
   // workspace as it was.
   CheckBackendCanRun(options.msp);
+  if (lock == nullptr) lock = LockWorkspace(workspace.path);
   WriteFusionConfigIfMissing(workspace);
 
   std::vector<std::string> names;

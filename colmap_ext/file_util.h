@@ -16,10 +16,15 @@ void CreateParentDirectories(const std::string& path);
 // Reads a whole file. Throws InputError naming `path` when it cannot be read.
 std::string ReadFileToString(const std::string& path);
 
-// Writes `bytes` to "<path>.tmp-<pid>" and renames it to `path`, creating
-// missing parent folders. Throws InputError naming `path` on failure and
-// removes the temporary file.
+// Writes `bytes` to TemporaryPath(path, pid), flushes it to the disk and
+// renames it to `path`, creating missing parent folders. Throws InputError
+// naming `path` and the system's reason (e.g. "No space left on device") on
+// failure and removes the temporary file.
 void WriteFileAtomic(const std::string& path, const std::string& bytes);
+
+// "<path>.tmp-<pid>": where WriteFileAtomic writes before the rename.
+constexpr char kTemporarySuffix[] = ".tmp-";
+std::string TemporaryPath(const std::string& path, long pid);
 
 // True when `path` exists and is a regular file (or a link to one).
 bool IsFile(const std::string& path);

@@ -7,15 +7,20 @@
 #include <exception>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "base/log.h"
+#include "base/stop_request.h"
 #include "colmap_ext/errors.h"
 #include "colmap_ext/file_util.h"
 #include "colmap_ext/ground_truth.h"
 #include "colmap_ext/map_writer.h"
+#include "colmap_ext/stale_files.h"
 #include "colmap_ext/workspace.h"
+#include "colmap_ext/workspace_lock.h"
 #include "options/option_check.h"
 #include "options/option_name.h"
 #include "options/option_parser.h"
@@ -102,6 +107,31 @@ std::optional<GroundTruthInfo> PreviewGroundTruth(const std::string& workspace_p
   }
 }
 
+// Takes the workspace lock (one msp_stereo per workspace) and removes what an
+// interrupted run left behind, which no live run can own while the lock is held.
+std::unique_ptr<WorkspaceLock> LockWorkspace(const std::string& workspace_path) {
+  const std::string stereo_dir = JoinPaths(workspace_path, "stereo");
+  auto lock = std::make_unique<WorkspaceLock>(stereo_dir);
+  const std::vector<std::string> removed =
+      RemoveStaleFiles(stereo_dir, workspace_path + kScratchSubdir);
+  if (!removed.empty()) {
+    std::cout << "Removed " << removed.size() << " temporary file(s) an interrupted run left, e.g. "
+              << removed.front() << std::endl;
+  }
+  return lock;
+}
+
+// How many reference images have their final maps: what a stopped or failed
+// run leaves done, and what the next run skips.
+void PrintWhatIsDone(const Workspace& workspace, const MapWriter& writer) {
+  size_t done = 0;
+  for (const Problem& problem : workspace.problems) done += writer.HasFinalOutput(problem.ref);
+  std::cout << done << " of " << workspace.problems.size()
+            << " reference images have their final maps in " << workspace.path
+            << "/stereo; run the same command again to resume (finished images are skipped)"
+            << std::endl;
+}
+
 int Run(int argc, char** argv) {
   StereoCommandOptions options;
   if (ParseStereoCommand(argc, argv, &options) == ParseStatus::kHelp) {
@@ -109,6 +139,8 @@ int Run(int argc, char** argv) {
     return 0;
   }
   CheckStereoCommandOptions(options);
+  SetLogLevel(options.log_level);
+  InstallStopHandlers();
 
   const auto start = std::chrono::steady_clock::now();
   PrintHeading("MSP stereo (backend: " + options.msp.backend + ")");
@@ -117,6 +149,19 @@ int Run(int argc, char** argv) {
   std::cout << std::endl;
   WarnAboutIgnoredOptions(options);
 
+  // Before reading: a second run on the workspace stops at once. A workspace
+  // without stereo/ (possible with --config_path) is locked once it has read;
+  // a back-end that cannot run reads it and stops without creating the lock.
+  bool backend_runs = true;
+  try {
+    CheckBackendCanRun(options.msp);
+  } catch (const std::runtime_error&) {
+    backend_runs = false;
+  }
+  std::unique_ptr<WorkspaceLock> lock;
+  if (backend_runs && IsDirectory(JoinPaths(options.workspace_path, "stereo"))) {
+    lock = LockWorkspace(options.workspace_path);
+  }
   std::cout << "Reading workspace " << options.workspace_path << "..." << std::endl;
   const Workspace workspace = LoadWorkspace(options);
   std::cout << "  " << workspace.views.size() << " images, " << workspace.problems.size()
@@ -124,6 +169,7 @@ int Run(int argc, char** argv) {
   // Before the first file is written: a back-end that cannot run leaves the
   // workspace as it was.
   CheckBackendCanRun(options.msp);
+  if (lock == nullptr) lock = LockWorkspace(workspace.path);
   WriteFusionConfigIfMissing(workspace);
 
   std::vector<std::string> names;
@@ -132,8 +178,18 @@ int Run(int argc, char** argv) {
   MapWriter writer(workspace.path, std::move(names), options.patch_match.geom_consistency,
                    options.msp.write_previews ? PreviewGroundTruth(workspace.path) : std::nullopt);
 
-  RunStereo(workspace.views, workspace.problems, options.patch_match, options.msp,
-            workspace.path + kScratchSubdir, writer);
+  try {
+    RunStereo(workspace.views, workspace.problems, options.patch_match, options.msp,
+              workspace.path + kScratchSubdir, writer);
+  } catch (const StopRequested& stop) {
+    std::cout << "Stopped by " << SignalName(stop.signal_number())
+              << " between two steps; nothing is half-written. ";
+    PrintWhatIsDone(workspace, writer);
+    return 128 + stop.signal_number();
+  } catch (const std::exception&) {
+    PrintWhatIsDone(workspace, writer);
+    throw;
+  }
 
   const double minutes =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 60.0;
@@ -148,6 +204,10 @@ int Run(int argc, char** argv) {
 int main(int argc, char** argv) {
   try {
     return msp::Run(argc, argv);
+  } catch (const msp::StopRequested& stop) {
+    std::cout << "Stopped by " << msp::SignalName(stop.signal_number())
+              << " before any map was computed" << std::endl;
+    return 128 + stop.signal_number();
   } catch (const std::exception& e) {
     std::cout.flush();
     std::cerr << "ERROR: " << e.what() << std::endl;

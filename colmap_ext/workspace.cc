@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "base/stop_request.h"
 #include "colmap_ext/camera_conversion.h"
 #include "colmap_ext/errors.h"
 #include "colmap_ext/file_util.h"
@@ -219,6 +220,8 @@ void LoadViews(const std::vector<Problem>& problems, int max_image_size, Workspa
     DownsizedSize(width, height, max_image_size, &new_width, &new_height);
     ResizeCamera(new_width, new_height, &view.camera);
     if (used[i]) {
+      // Reading hundreds of images takes a while: Ctrl-C need not wait for it.
+      ThrowIfStopRequested();
       const std::string path = JoinPaths(JoinPaths(ws->path, "images"), view.name);
       LoadViewImage(path, width, height, new_width, new_height, &view.gray, &view.color);
     }

@@ -101,7 +101,10 @@ void DefineTopLevelOptions(StereoCommandOptions* o, OptionTable* t) {
       t, *o, random_seed,
       "COLMAP's global seed; used as " + MSP_OPTION_FLAG(o->msp, seed) + " unless that is given.");
   MSP_ADD_OPTION(t, *o, log_to_stderr, "Accepted for compatibility with COLMAP; ignored.");
-  MSP_ADD_OPTION(t, *o, log_level, "Accepted for compatibility with COLMAP; ignored.");
+  MSP_ADD_OPTION(t, *o, log_level,
+                 "Verbosity, as COLMAP's (glog's -v): 2 = every line, 1 = no per-step figures "
+                 "(one line per image and pass with the running total and ETA), 0 = no "
+                 "per-image lines either (the start, warnings, errors and the final summary).");
 }
 
 void DefinePatchMatchStereoOptions(PatchMatchStereoOptions* p, OptionTable* t) {

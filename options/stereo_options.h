@@ -194,7 +194,8 @@ struct StereoCommandOptions {
   int random_seed = 0;
   // accepted, ignored: msp_stereo logs to stdout and reports errors on stderr.
   bool log_to_stderr = false;
-  // accepted, ignored: COLMAP's glog verbosity level.
+  // COLMAP's glog verbosity (-v): a log line of level n shows when n <= log_level
+  // (base/log.h); COLMAP's default 2 shows them all.
   int log_level = 2;
   PatchMatchStereoOptions patch_match;  // --PatchMatchStereo.*
   MspStereoOptions msp;                 // --MspStereo.*

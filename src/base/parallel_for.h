@@ -1,5 +1,6 @@
 // A small ParallelFor: splits [begin, end) over worker threads; runs inline
-// with one thread. Work items must be independent of each other.
+// with one thread. Work items must be independent of each other. A stop
+// request (base/stop_request.h) ends it early with StopRequested.
 #pragma once
 
 #include <functional>

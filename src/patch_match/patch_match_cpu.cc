@@ -11,13 +11,17 @@
 #include <utility>
 #include <vector>
 
+#include "base/log.h"
 #include "base/parallel_for.h"
+#include "base/progress.h"
 #include "base/seconds_since.h"
+#include "base/stop_request.h"
 #include "core/patch_match/output_filter.h"
 #include "deformable/deformable_pass.h"
 #include "deformable/deformable_sweeps.h"
 #include "patch_match/image_pyramid.h"
 #include "patch_match/pass_schedule.h"
+#include "patch_match/run_summary.h"
 #include "patch_match/segment_planes.h"
 #include "patch_match/state_cache.h"
 #include "patch_match/sweeps.h"
@@ -108,17 +112,67 @@ class CpuRunner {
     const std::vector<Pass> schedule = BuildPassSchedule(pm_, msp_, max_w, max_h);
     std::printf("CPU back-end: %zu problems, %d round(s), %d thread(s)\n", run_.size(),
                 schedule.front().num_rounds, threads_);
-    for (const Pass& pass : schedule) std::printf("  %s\n", ToString(pass).c_str());
+    for (const Pass& pass : schedule) Logf(kLogDetail, "  %s\n", ToString(pass).c_str());
     start_ = std::chrono::steady_clock::now();
-    for (const Pass& pass : schedule) RunPass(pass);
-    if (prior_ != nullptr) {
-      std::printf("Segmentation prior: %d calls, %.2f s, %.1f%% of the %.2f s of the passes\n",
-                  prior_->NumCalls(), prior_->TotalSeconds(),
-                  100.0 * prior_->TotalSeconds() / std::max(Elapsed(), 1e-9), Elapsed());
+    progress_.reset(
+        new ProgressMeter(static_cast<int>(schedule.size() * run_.size()), TotalWeight(schedule)));
+    std::vector<PassTime> pass_times;
+    for (const Pass& pass : schedule) {
+      const auto pass_start = std::chrono::steady_clock::now();
+      RunPass(pass);
+      pass_times.push_back({PassLabel(pass), SecondsSince(pass_start)});
     }
+    if (prior_ != nullptr) {
+      Logf(kLogDetail, "Segmentation prior: %d calls, %.2f s, %.1f%% of the %.2f s of the passes\n",
+           prior_->NumCalls(), prior_->TotalSeconds(),
+           100.0 * prior_->TotalSeconds() / std::max(Elapsed(), 1e-9), Elapsed());
+    }
+    std::printf("%s", FormatRunSummary(pass_times, ImageOutcomes()).c_str());
+    std::fflush(stdout);
   }
 
  private:
+  // The share of the run's work of one image-pass, for the ETA: its pixels at
+  // the pass's pyramid level (the passes' steps are per pixel).
+  double Weight(const Pass& pass, int ref) const {
+    int width = views_[ref].camera.width, height = views_[ref].camera.height;
+    for (int h = 0; h < pass.halvings; ++h) {
+      width /= 2;
+      height /= 2;
+    }
+    return static_cast<double>(width) * height;
+  }
+
+  double TotalWeight(const std::vector<Pass>& schedule) const {
+    double total = 0;
+    for (const Pass& pass : schedule) {
+      for (int k : run_) total += Weight(pass, problems_[k].ref);
+    }
+    return total;
+  }
+
+  static std::string PassLabel(const Pass& pass) {
+    return "round " + std::to_string(pass.round + 1) + "/" + std::to_string(pass.num_rounds) +
+           ", " + (pass.kind == PassKind::kGeometric ? "geometric" : "photometric") + " pass " +
+           std::to_string(pass.index + 1);
+  }
+
+  // Every reference image with the valid pixels of the final map this run
+  // wrote, or as kept from an earlier run.
+  std::vector<ImageOutcome> ImageOutcomes() const {
+    std::vector<ImageOutcome> outcomes;
+    for (const Problem& problem : problems_) {
+      ImageOutcome outcome;
+      outcome.name = views_[problem.ref].name;
+      outcome.width = views_[problem.ref].camera.width;
+      outcome.height = views_[problem.ref].camera.height;
+      auto it = valid_pixels_.find(problem.ref);
+      if (it != valid_pixels_.end()) outcome.valid_pixels = it->second;
+      outcomes.push_back(outcome);
+    }
+    return outcomes;
+  }
+
   std::vector<int> ViewsOf(const Problem& problem) const {
     std::vector<int> v = problem.srcs;
     v.push_back(problem.ref);
@@ -203,7 +257,11 @@ class CpuRunner {
     // Jacobi: every problem reads its sources' depths as they were before this pass.
     const std::map<int, DenseMap> prev_depth =
         pass.kind == PassKind::kGeometric ? CurrentDepths() : std::map<int, DenseMap>();
-    for (size_t n = 0; n < run_.size(); ++n) RunProblemPass(pass, n, prev_depth);
+    for (size_t n = 0; n < run_.size(); ++n) {
+      // The safe point between image-passes: nothing is half-written here.
+      ThrowIfStopRequested();
+      RunProblemPass(pass, n, prev_depth);
+    }
   }
 
   // The round's images and cameras; the previous round's become the coarser level.
@@ -260,28 +318,28 @@ class CpuRunner {
     if (prior_preview) WritePriorPreview(problem, state);
     cache_.Put(problem.ref, std::move(state));
     cache_.EnforceBudget(problem.ref);
-    std::printf(
-        "Round %d/%d, %s pass %d, image %zu/%zu [%s] %dx%d: %.2f s (filter and local refine "
-        "%.2f s; elapsed %.1f s)\n",
-        pass.round + 1, pass.num_rounds,
-        pass.kind == PassKind::kGeometric ? "geometric" : "photometric", pass.index + 1, n + 1,
-        run_.size(), views_[problem.ref].name.c_str(), params.state.width, params.state.height,
-        SecondsSince(t0), refine_seconds, Elapsed());
-    std::fflush(stdout);
+    progress_->Add(Weight(pass, problem.ref));
+    Logf(kLogProgress,
+         "Round %d/%d, %s pass %d, image %zu/%zu [%s] %dx%d: %.2f s (filter and local refine "
+         "%.2f s); %s\n",
+         pass.round + 1, pass.num_rounds,
+         pass.kind == PassKind::kGeometric ? "geometric" : "photometric", pass.index + 1, n + 1,
+         run_.size(), views_[problem.ref].name.c_str(), params.state.width, params.state.height,
+         SecondsSince(t0), refine_seconds, progress_->Line(Elapsed()).c_str());
   }
 
   // The deformable step of a pass (DeformablePass), then its figures in the log.
   void RunDeformableStep(const Pass& pass, const core::PassParams& params, PixelState* state) {
     const DeformableStepReport report = deformable_.Run(pass, params, state);
     const double pixels = static_cast<double>(report.num_pixels);
-    std::printf(
-        "  reliable %.1f%%, unreliable %.1f%%, deformable updates %.1f%% of pixels; %s %.2f s, "
-        "anchor search %.2f s, sweeps %.2f s\n",
-        100.0 * report.num_reliable / pixels, 100.0 * report.num_unreliable / pixels,
-        100.0 * report.sweeps.anchored_updates / (pixels * pass.iterations),
-        report.classified ? "classification"
-                          : "nearest-reliable map (classes from the local refine)",
-        report.classify_seconds, report.sweeps.anchor_seconds, report.sweeps.sweep_seconds);
+    Logf(kLogDetail,
+         "  reliable %.1f%%, unreliable %.1f%%, deformable updates %.1f%% of pixels; %s %.2f s, "
+         "anchor search %.2f s, sweeps %.2f s\n",
+         100.0 * report.num_reliable / pixels, 100.0 * report.num_unreliable / pixels,
+         100.0 * report.sweeps.anchored_updates / (pixels * pass.iterations),
+         report.classified ? "classification"
+                           : "nearest-reliable map (classes from the local refine)",
+         report.classify_seconds, report.sweeps.anchor_seconds, report.sweeps.sweep_seconds);
   }
 
   // Segment planes of one image after a pass (docs/method.md section 2.10),
@@ -290,11 +348,11 @@ class CpuRunner {
     const auto t0 = std::chrono::steady_clock::now();
     const SegmentPlanesReport r =
         ApplySegmentPlanes(params, level_->color.at(problem.ref), segmenter_, threads_);
-    std::printf(
-        "  segment planes: %d of %d segments, %.1f%% of pixels offered, %.1f%% took; %.2f s\n",
-        r.num_planes, r.num_segments,
-        100.0 * r.num_offered / (params.state.width * params.state.height),
-        100.0 * r.num_taken / (params.state.width * params.state.height), SecondsSince(t0));
+    Logf(kLogDetail,
+         "  segment planes: %d of %d segments, %.1f%% of pixels offered, %.1f%% took; %.2f s\n",
+         r.num_planes, r.num_segments,
+         100.0 * r.num_offered / (params.state.width * params.state.height),
+         100.0 * r.num_taken / (params.state.width * params.state.height), SecondsSince(t0));
   }
 
   // The prior of one image after a deformable pass (docs/method.md section 4): its
@@ -328,8 +386,8 @@ class CpuRunner {
 
   void WritePriorPreview(const Problem& problem, const PixelState& state) {
     if (state.edges.empty()) {
-      std::printf("  no segmentation prior edges for %s (no deformable pass made any)\n",
-                  views_[problem.ref].name.c_str());
+      Logf(kLogDetail, "  no segmentation prior edges for %s (no deformable pass made any)\n",
+           views_[problem.ref].name.c_str());
     }
     sink_.WritePriorPreview(problem.ref, level_->color.at(problem.ref),
                             UnpackEdgeBit(state.edges, kAggregatedEdge),
@@ -382,6 +440,9 @@ class CpuRunner {
     // every view with final maps has its pictures.
     if (pass.map_previews) sink_.WriteMapPreviews(problem.ref, depth, normal);
     sink_.Write(problem.ref, pm_.geom_consistency ? "geometric" : "photometric", depth, normal);
+    long valid = 0;
+    for (int i = 0; i < depth.width * depth.height; ++i) valid += depth.data[i] > 0 ? 1 : 0;
+    valid_pixels_[problem.ref] = valid;
   }
 
   double Elapsed() const { return SecondsSince(start_); }
@@ -400,6 +461,8 @@ class CpuRunner {
   DeformablePass deformable_;           // the deformable step and its buffers
   const Segmenter segmenter_;           // of segment planes
   std::chrono::steady_clock::time_point start_;
+  std::unique_ptr<ProgressMeter> progress_;
+  std::map<int, long> valid_pixels_;  // of the final maps written, by reference view
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "base/log.h"
 #include "base/seconds_since.h"
 #include "prior/crf_refinement.h"
 #include "prior/geometry_layers.h"
@@ -118,18 +119,19 @@ const LabelLayers& PriorDriver::RoundLayers(int view, const DenseMap& color) {
 void PriorDriver::LogSources(int view, int num_round_layers, bool with_geometry) {
   if (!logged_source_.insert(view).second) return;
   if (FromMaskFiles(view)) {
-    std::printf("  segmentation prior of %s: %d label layers from the mask files%s\n",
-                views_[view].name.c_str(), num_round_layers,
-                options_.geometry_layers ? " (no geometry layers: mask files decide)" : "");
+    Logf(kLogDetail, "  segmentation prior of %s: %d label layers from the mask files%s\n",
+         views_[view].name.c_str(), num_round_layers,
+         options_.geometry_layers ? " (no geometry layers: mask files decide)" : "");
     return;
   }
-  std::printf("  segmentation prior of %s: %d colour label layers from the embedded segmenter (%s)",
-              views_[view].name.c_str(), num_round_layers, SegmenterName(segmenter_));
+  Logf(kLogDetail,
+       "  segmentation prior of %s: %d colour label layers from the embedded segmenter (%s)",
+       views_[view].name.c_str(), num_round_layers, SegmenterName(segmenter_));
   if (with_geometry) {
-    std::printf(" and %d geometry layer%s from the current depth and normal maps",
-                core::kNumGeometryLayers, core::kNumGeometryLayers == 1 ? "" : "s");
+    Logf(kLogDetail, " and %d geometry layer%s from the current depth and normal maps",
+         core::kNumGeometryLayers, core::kNumGeometryLayers == 1 ? "" : "s");
   }
-  std::printf("\n");
+  Logf(kLogDetail, "\n");
 }
 
 std::vector<uint8_t> PriorDriver::Run(const PriorPassInput& input) {
@@ -163,13 +165,13 @@ std::vector<uint8_t> PriorDriver::Run(const PriorPassInput& input) {
   total_seconds_ += seconds;
   ++num_calls_;
   const SegmentationPriorTimes& t = result.times;
-  std::printf(
-      "  segmentation prior: %.3f s (layers %.3f, geometry layers %.3f, boundaries %.3f, best "
-      "layers %.3f, aggregation %.3f, CRF %.3f%s), %zu anchored pixels, edges on %.1f%% of "
-      "pixels\n",
-      seconds, layer_seconds, geometry_seconds, t.boundaries_s, t.best_layers_s, t.aggregation_s,
-      t.refinement_s, options_.edge_refinement && input.depth == nullptr ? " colour only" : "",
-      input.anchors->size(), 100.0 * EdgeShare(packed));
+  Logf(kLogDetail,
+       "  segmentation prior: %.3f s (layers %.3f, geometry layers %.3f, boundaries %.3f, best "
+       "layers %.3f, aggregation %.3f, CRF %.3f%s), %zu anchored pixels, edges on %.1f%% of "
+       "pixels\n",
+       seconds, layer_seconds, geometry_seconds, t.boundaries_s, t.best_layers_s, t.aggregation_s,
+       t.refinement_s, options_.edge_refinement && input.depth == nullptr ? " colour only" : "",
+       input.anchors->size(), 100.0 * EdgeShare(packed));
   return packed;
 }
 

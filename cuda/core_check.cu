@@ -83,8 +83,7 @@ void LaunchDeformable(const core::PassParams* device_params, const core::AnchorM
 
 void LaunchClassify(const core::PassParams* device_params, const core::ReliabilityParams& rp,
                     uint8_t* device_classes, int width, int height) {
-  ClassifyKernel<<<PixelGrid(width, height), PixelBlock()>>>(device_params, rp,
-                                                                           device_classes);
+  ClassifyKernel<<<PixelGrid(width, height), PixelBlock()>>>(device_params, rp, device_classes);
 }
 
 }  // namespace cuda

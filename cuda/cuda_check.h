@@ -21,18 +21,18 @@ inline void ThrowCudaError(cudaError_t status, const char* call, const char* fil
 }  // namespace cuda
 }  // namespace msp
 
-#define MSP_CUDA_CHECK(call)                                                \
-  do {                                                                      \
-    const cudaError_t msp_cuda_status_ = (call);                            \
-    if (msp_cuda_status_ != cudaSuccess) {                                  \
+#define MSP_CUDA_CHECK(call)                                                    \
+  do {                                                                          \
+    const cudaError_t msp_cuda_status_ = (call);                                \
+    if (msp_cuda_status_ != cudaSuccess) {                                      \
       ::msp::cuda::ThrowCudaError(msp_cuda_status_, #call, __FILE__, __LINE__); \
-    }                                                                       \
+    }                                                                           \
   } while (0)
 
 // After a kernel launch: the launch's own error (bad geometry, no device)
 // and, with the synchronisation, any fault inside the kernel.
-#define MSP_CUDA_CHECK_LAUNCH()                   \
-  do {                                            \
-    MSP_CUDA_CHECK(cudaGetLastError());           \
-    MSP_CUDA_CHECK(cudaDeviceSynchronize());      \
+#define MSP_CUDA_CHECK_LAUNCH()              \
+  do {                                       \
+    MSP_CUDA_CHECK(cudaGetLastError());      \
+    MSP_CUDA_CHECK(cudaDeviceSynchronize()); \
   } while (0)

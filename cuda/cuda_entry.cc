@@ -1,11 +1,12 @@
 // RunPatchMatchCuda: the CPU back-end's pass schedule with the GPU's sweeps.
+#include "backend/cuda_entry.h"
+
 #include <cstdio>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
-#include "backend/cuda_entry.h"
 #include "backend/gpu_index.h"
 #include "cuda/cuda_sweep_engine.h"
 #include "patch_match/patch_match_cpu.h"

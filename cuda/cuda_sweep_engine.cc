@@ -31,50 +31,54 @@ void CudaSweepEngine::SelectDevice(const core::PassParams& params) {
   }
 }
 
-void CudaSweepEngine::Initialize(const core::PassParams& params) {
+template <typename Step>
+void CudaSweepEngine::OnDevice(const core::PassParams& params, Step step) {
   SelectDevice(params);
   const DevicePass pass(params);
-  LaunchInitialize(pass.params(), pass.width(), pass.height());
-  LaunchScore(pass.params(), pass.width(), pass.height());
+  step(pass);
   pass.DownloadState(params);
+}
+
+void CudaSweepEngine::Initialize(const core::PassParams& params) {
+  OnDevice(params, [](const DevicePass& pass) {
+    LaunchInitialize(pass.params(), pass.width(), pass.height());
+    LaunchScore(pass.params(), pass.width(), pass.height());
+  });
 }
 
 void CudaSweepEngine::Score(const core::PassParams& params) {
-  SelectDevice(params);
-  const DevicePass pass(params);
-  LaunchScore(pass.params(), pass.width(), pass.height());
-  pass.DownloadState(params);
+  OnDevice(params,
+           [](const DevicePass& pass) { LaunchScore(pass.params(), pass.width(), pass.height()); });
 }
 
 void CudaSweepEngine::Checkerboard(const core::PassParams& params, int num_iterations) {
-  SelectDevice(params);
-  const DevicePass pass(params);
-  for (int iteration = 0; iteration < num_iterations; ++iteration) {
-    for (int color = 0; color < 2; ++color) {
-      LaunchCheckerboard(pass.params(), pass.width(), pass.height(), color, iteration);
+  OnDevice(params, [num_iterations](const DevicePass& pass) {
+    for (int iteration = 0; iteration < num_iterations; ++iteration) {
+      for (int color = 0; color < 2; ++color) {
+        LaunchCheckerboard(pass.params(), pass.width(), pass.height(), color, iteration);
+      }
     }
-  }
-  pass.DownloadState(params);
+  });
 }
 
 void CudaSweepEngine::LocalRefine(const core::PassParams& params) {
-  SelectDevice(params);
-  const DevicePass pass(params);
-  LaunchLocalRefine(pass.params(), pass.width(), pass.height());
-  pass.DownloadState(params);
+  OnDevice(params, [](const DevicePass& pass) {
+    LaunchLocalRefine(pass.params(), pass.width(), pass.height());
+  });
 }
 
 std::vector<uint8_t> CudaSweepEngine::LocalRefineAndClassify(const core::PassParams& params,
                                                              const core::ReliabilityParams& rp) {
-  SelectDevice(params);
-  const DevicePass pass(params);
-  const size_t n = static_cast<size_t>(pass.width()) * pass.height();
-  DeviceBuffer<uint8_t> classes(n);
-  LaunchLocalRefineAndClassify(pass.params(), rp, classes.data(), pass.width(), pass.height());
-  pass.DownloadState(params);
-  std::vector<uint8_t> host(n);
-  classes.Download(host.data(), n);
-  return host;
+  std::vector<uint8_t> classes;
+  OnDevice(params, [&](const DevicePass& pass) {
+    const size_t n = static_cast<size_t>(pass.width()) * pass.height();
+    DeviceBuffer<uint8_t> device_classes(n);
+    LaunchLocalRefineAndClassify(pass.params(), rp, device_classes.data(), pass.width(),
+                                 pass.height());
+    classes.resize(n);
+    device_classes.Download(classes.data(), n);
+  });
+  return classes;
 }
 
 void CudaSweepEngine::Finish() {

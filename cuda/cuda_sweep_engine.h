@@ -32,6 +32,9 @@ class CudaSweepEngine : public SweepEngine {
  private:
   // Makes the image's device current.
   void SelectDevice(const core::PassParams& params);
+  // Uploads the pass to the image's device, runs step(pass), downloads the state.
+  template <typename Step>
+  void OnDevice(const core::PassParams& params, Step step);
 
   std::map<uint32_t, int> device_of_image_;
   int default_device_;

@@ -55,11 +55,13 @@ class DeviceBuffer {
   }
   void Upload(const T* host, size_t count) {
     if (count > count_) throw std::runtime_error("DeviceBuffer::Upload: more than allocated");
-    if (count > 0) MSP_CUDA_CHECK(cudaMemcpy(data_, host, count * sizeof(T), cudaMemcpyHostToDevice));
+    if (count > 0)
+      MSP_CUDA_CHECK(cudaMemcpy(data_, host, count * sizeof(T), cudaMemcpyHostToDevice));
   }
   void Download(T* host, size_t count) const {
     if (count > count_) throw std::runtime_error("DeviceBuffer::Download: more than allocated");
-    if (count > 0) MSP_CUDA_CHECK(cudaMemcpy(host, data_, count * sizeof(T), cudaMemcpyDeviceToHost));
+    if (count > 0)
+      MSP_CUDA_CHECK(cudaMemcpy(host, data_, count * sizeof(T), cudaMemcpyDeviceToHost));
   }
 
  private:

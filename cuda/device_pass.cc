@@ -19,13 +19,12 @@ DevicePass::DevicePass(const core::PassParams& host)
   normal_ = DeviceBuffer<float>::FromHost(host.state.normal, 3 * n);
   cost_ = DeviceBuffer<float>::FromHost(host.state.cost, n);
   mask_ = DeviceBuffer<uint32_t>::FromHost(host.state.mask, n);
-  device.state = core::PixelStateView{depth_.data(), normal_.data(), cost_.data(), mask_.data(),
-                                      width_,        height_};
+  device.state = core::PixelStateView{depth_.data(), normal_.data(), cost_.data(),
+                                      mask_.data(),  width_,         height_};
   params_ = DeviceBuffer<core::PassParams>::FromHost(&device, 1);
 }
 
-core::ImageView DevicePass::UploadImage(const core::ImageView& view,
-                                        DeviceBuffer<float>* buffer) {
+core::ImageView DevicePass::UploadImage(const core::ImageView& view, DeviceBuffer<float>* buffer) {
   if (view.data == nullptr) return view;
   const size_t count = static_cast<size_t>(view.pitch) * (view.height - 1) + view.width;
   *buffer = DeviceBuffer<float>::FromHost(view.data, count);

@@ -1,10 +1,11 @@
 // The CUDA runtime's answer to the back-end choice: the devices present, with
 // their free memory and what the sweep kernels reserve on each.
+#include "backend/device_query.h"
+
 #include <cuda_runtime.h>
 
 #include <algorithm>
 
-#include "backend/device_query.h"
 #include "cuda/cuda_check.h"
 #include "cuda/sweep_kernels.h"
 

@@ -84,7 +84,7 @@ void LaunchLocalRefineAndClassify(const core::PassParams* device_params,
                                   const core::ReliabilityParams& rp, uint8_t* device_classes,
                                   int width, int height) {
   LocalRefineAndClassifyKernel<<<PixelGrid(width, height), PixelBlock()>>>(device_params, rp,
-                                                                    device_classes);
+                                                                           device_classes);
   MSP_CUDA_CHECK_LAUNCH();
 }
 

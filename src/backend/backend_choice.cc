@@ -27,16 +27,19 @@ BackendChoice ChooseBackend(const std::string& backend, const std::string& gpu_i
     const std::string why =
         "this msp_stereo was built without the CUDA back-end (nvcc not found or "
         "-DCUDA_ENABLED=OFF)";
-    if (required) throw std::runtime_error(BackendFlag() + " cuda: " + why + "; use " +
-                                           BackendFlag() + " cpu or auto");
+    if (required)
+      throw std::runtime_error(BackendFlag() + " cuda: " + why + "; use " + BackendFlag() +
+                               " cpu or auto");
     return BackendChoice{"cpu", {}, "auto: " + why};
   }
   std::string why_none;
   const std::vector<DeviceInfo> devices = query.Devices(&why_none);
   if (devices.empty()) {
-    const std::string why = "no CUDA device found" + (why_none.empty() ? "" : " (" + why_none + ")");
-    if (required) throw std::runtime_error(BackendFlag() + " cuda: " + why + "; use " +
-                                           BackendFlag() + " cpu or auto");
+    const std::string why =
+        "no CUDA device found" + (why_none.empty() ? "" : " (" + why_none + ")");
+    if (required)
+      throw std::runtime_error(BackendFlag() + " cuda: " + why + "; use " + BackendFlag() +
+                               " cpu or auto");
     return BackendChoice{"cpu", {}, "auto: " + why};
   }
   BackendChoice choice{"cuda", {}, required ? "requested" : "auto: CUDA device found"};

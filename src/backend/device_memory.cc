@@ -22,8 +22,7 @@ DeviceMemoryEstimate EstimateDeviceMemory(const ImageSize& ref,
                                           const std::vector<ImageSize>& sources, bool geometric) {
   DeviceMemoryEstimate e;
   e.images = ref.Pixels() * sizeof(float);
-  const size_t num_sources =
-      std::min(sources.size(), static_cast<size_t>(core::kMaxSourceViews));
+  const size_t num_sources = std::min(sources.size(), static_cast<size_t>(core::kMaxSourceViews));
   for (size_t j = 0; j < num_sources; ++j) {
     e.images += sources[j].Pixels() * sizeof(float);
     if (geometric) e.source_depths += sources[j].Pixels() * sizeof(float);
@@ -41,8 +40,7 @@ DeviceMemoryEstimate EstimateProblemMemory(const std::vector<View>& views, const
   return EstimateDeviceMemory({ref.width, ref.height}, sources, geometric);
 }
 
-int LargestFittingImageSize(const DeviceMemoryEstimate& estimate, int max_side,
-                            size_t available) {
+int LargestFittingImageSize(const DeviceMemoryEstimate& estimate, int max_side, size_t available) {
   const size_t scaled = estimate.Total() - estimate.params;
   if (available <= estimate.params || scaled == 0) return 0;
   // Buffers scale with the area, i.e. with the square of the side.
@@ -53,8 +51,7 @@ int LargestFittingImageSize(const DeviceMemoryEstimate& estimate, int max_side,
 
 std::vector<std::string> CheckDeviceMemory(const std::vector<View>& views,
                                            const std::vector<Problem>& problems,
-                                           const std::vector<DeviceInfo>& workers,
-                                           bool geometric) {
+                                           const std::vector<DeviceInfo>& workers, bool geometric) {
   if (workers.empty()) throw std::invalid_argument("CheckDeviceMemory: no worker");
   std::vector<size_t> largest(workers.size(), 0);
   for (size_t n = 0; n < problems.size(); ++n) {
@@ -71,8 +68,8 @@ std::vector<std::string> CheckDeviceMemory(const std::vector<View>& views,
     const core::Camera& ref = views[problems[n].ref].camera;
     max_side = std::max({max_side, ref.width, ref.height});
     std::ostringstream msg;
-    msg << "image " << views[problems[n].ref].name << " (" << ref.width << "x" << ref.height
-        << ", " << problems[n].srcs.size() << " sources) needs about " << Mebibytes(e.Total())
+    msg << "image " << views[problems[n].ref].name << " (" << ref.width << "x" << ref.height << ", "
+        << problems[n].srcs.size() << " sources) needs about " << Mebibytes(e.Total())
         << " MiB of device memory, GPU " << device.index << " (" << device.name << ") has "
         << Mebibytes(available) << " MiB free beyond the " << Mebibytes(device.reserve_bytes)
         << " MiB its kernels and context reserve";
@@ -89,10 +86,10 @@ std::vector<std::string> CheckDeviceMemory(const std::vector<View>& views,
   std::vector<std::string> lines;
   for (size_t w = 0; w < workers.size(); ++w) {
     std::ostringstream line;
-    line << "Device memory estimate, worker " << w << " (GPU " << workers[w].index
-         << "): up to " << Mebibytes(largest[w]) << " MiB per image, "
-         << Mebibytes(workers[w].free_bytes) << " MiB free, "
-         << Mebibytes(workers[w].reserve_bytes) << " MiB reserved for kernels and context";
+    line << "Device memory estimate, worker " << w << " (GPU " << workers[w].index << "): up to "
+         << Mebibytes(largest[w]) << " MiB per image, " << Mebibytes(workers[w].free_bytes)
+         << " MiB free, " << Mebibytes(workers[w].reserve_bytes)
+         << " MiB reserved for kernels and context";
     lines.push_back(line.str());
   }
   return lines;

@@ -21,11 +21,11 @@ inline std::vector<DeviceInfo> CudaDevices(std::string* why_none) {
 }  // namespace msp
 
 // Skips the test, with the reason, when no CUDA device is present.
-#define MSP_SKIP_WITHOUT_GPU()                                                    \
-  do {                                                                            \
-    std::string msp_why_none_;                                                    \
-    if (::msp::test::CudaDevices(&msp_why_none_).empty()) {                       \
-      GTEST_SKIP() << "no CUDA device on this machine (" << msp_why_none_          \
+#define MSP_SKIP_WITHOUT_GPU()                                                                  \
+  do {                                                                                          \
+    std::string msp_why_none_;                                                                  \
+    if (::msp::test::CudaDevices(&msp_why_none_).empty()) {                                     \
+      GTEST_SKIP() << "no CUDA device on this machine (" << msp_why_none_                       \
                    << "); the CPU/GPU parity is checked where one exists (bench/gpu_check.sh)"; \
-    }                                                                             \
+    }                                                                                           \
   } while (0)

@@ -98,8 +98,8 @@ TEST(SweepParity, ScoreGivesTheSameCostsInAGeometricPass) {
   const int n = s.ref.width * s.ref.height;
   std::vector<float> source_depth(n, 1.01f * kPlaneDepth);
   for (int j = 0; j < s.params.num_src; ++j) {
-    s.params.src[j].depth = core::ImageView{source_depth.data(), s.ref.width, s.ref.height,
-                                            s.ref.width};
+    s.params.src[j].depth =
+        core::ImageView{source_depth.data(), s.ref.width, s.ref.height, s.ref.width};
   }
   s.params.geometric = 1;
   StateCopy cpu(s.params), gpu(s.params);

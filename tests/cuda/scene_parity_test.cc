@@ -5,6 +5,7 @@
 // change spread through propagation; the tolerances below bound that.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>

@@ -40,7 +40,7 @@ class MemorySink : public MapSink {
 
 TEST(SceneParity, BundledSceneAt320x240GivesTheSameMapsOnBothBackEnds) {
   MSP_SKIP_WITHOUT_GPU();
-  TempDir dir;
+  test::TempDir dir;
   scene::GeneratorOptions generator;
   generator.output = dir / "scene";
   generator.rig.width = 320;

@@ -168,7 +168,7 @@ int Run(int argc, char** argv) {
             << " problems" << std::endl;
   // Before the first file is written: a back-end that cannot run leaves the
   // workspace as it was.
-  CheckBackendCanRun(options.msp);
+  CheckBackendCanRun(options.patch_match, options.msp);
   if (lock == nullptr) lock = LockWorkspace(workspace.path);
   WriteFusionConfigIfMissing(workspace);
 

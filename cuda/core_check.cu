@@ -1,8 +1,8 @@
 // Compiles every src/core header for the device, so host/device compatibility
 // of the shared per-pixel code is checked on every build with nvcc. Its
-// kernels (a conventional and a deformable checkerboard colour, the
-// classification, the local refinement with classification) call the same
-// functions as the CPU driver.
+// kernels (a deformable checkerboard colour, the classification) call the
+// same functions as the CPU driver; the sweeps the CUDA back-end runs are in
+// sweep_kernels.cu.
 #include "core/cost/ncc.h"
 #include "core/cost/ref_window.h"
 #include "core/cost/window_batch.h"
@@ -33,21 +33,11 @@
 #include "core/prior/prior_limits.h"
 #include "core/prior/segment_crossing.h"
 #include "cuda/core_check.h"
+#include "cuda/launch_geometry.cuh"
 
 namespace msp {
 namespace cuda {
 namespace {
-
-// Threads per block of the 2D launch: 16 x 16 covers a tile of pixels.
-constexpr int kBlockSide = 16;
-
-__global__ void CheckerboardKernel(const core::PassParams* params, int color, int iteration) {
-  const int col = blockIdx.x * blockDim.x + threadIdx.x;
-  const int row = blockIdx.y * blockDim.y + threadIdx.y;
-  if (col >= params->state.width || row >= params->state.height) return;
-  if (((col + row) & 1) != color) return;
-  core::UpdatePixel(*params, col, row, iteration);
-}
 
 // Deformable iteration of one colour: unreliable pixels with anchors take the
 // deformable update (APD), the others the conventional one.
@@ -81,46 +71,19 @@ __global__ void ClassifyKernel(const core::PassParams* params, core::Reliability
   classes[row * params->state.width + col] = core::ClassifyPixel(*params, col, row, rp);
 }
 
-__global__ void LocalRefineAndClassifyKernel(const core::PassParams* params,
-                                             core::ReliabilityParams rp, uint8_t* classes) {
-  const int col = blockIdx.x * blockDim.x + threadIdx.x;
-  const int row = blockIdx.y * blockDim.y + threadIdx.y;
-  if (col >= params->state.width || row >= params->state.height) return;
-  classes[row * params->state.width + col] =
-      core::LocalRefineAndClassifyPixel(*params, col, row, rp);
-}
-
-dim3 GridFor(int width, int height) {
-  return dim3((width + kBlockSide - 1) / kBlockSide, (height + kBlockSide - 1) / kBlockSide);
-}
-
 }  // namespace
-
-void LaunchCheckerboard(const core::PassParams* device_params, int width, int height, int color,
-                        int iteration) {
-  CheckerboardKernel<<<GridFor(width, height), dim3(kBlockSide, kBlockSide)>>>(device_params, color,
-                                                                               iteration);
-}
 
 void LaunchDeformable(const core::PassParams* device_params, const core::AnchorMaps* device_maps,
                       const core::AnchorParams* device_anchor_params,
                       const core::PlaneMapView& planes, const core::DeformableParams& cost,
                       int width, int height, int color, int iteration) {
-  DeformableKernel<<<GridFor(width, height), dim3(kBlockSide, kBlockSide)>>>(
+  DeformableKernel<<<PixelGrid(width, height), PixelBlock()>>>(
       device_params, device_maps, device_anchor_params, planes, cost, color, iteration);
 }
 
 void LaunchClassify(const core::PassParams* device_params, const core::ReliabilityParams& rp,
                     uint8_t* device_classes, int width, int height) {
-  ClassifyKernel<<<GridFor(width, height), dim3(kBlockSide, kBlockSide)>>>(device_params, rp,
-                                                                           device_classes);
-}
-
-void LaunchLocalRefineAndClassify(const core::PassParams* device_params,
-                                  const core::ReliabilityParams& rp, uint8_t* device_classes,
-                                  int width, int height) {
-  LocalRefineAndClassifyKernel<<<GridFor(width, height), dim3(kBlockSide, kBlockSide)>>>(
-      device_params, rp, device_classes);
+  ClassifyKernel<<<PixelGrid(width, height), PixelBlock()>>>(device_params, rp, device_classes);
 }
 
 }  // namespace cuda

@@ -1,4 +1,4 @@
-// Plain C++ launcher of the device checkerboard kernel (no CUDA types here).
+// Plain C++ launchers of core_check.cu's kernels (no CUDA types here).
 #pragma once
 
 #include <cstdint>
@@ -12,13 +12,9 @@
 namespace msp {
 namespace cuda {
 
-// Runs UpdatePixel for every pixel of `color` (0 red, 1 black) on the device.
-// `device_params` and every pointer inside it must be device memory.
-void LaunchCheckerboard(const core::PassParams* device_params, int width, int height, int color,
-                        int iteration);
-
 // One colour of a deformable iteration (DeformableUpdatePixel where the
-// pixel is unreliable and has anchors); device pointers as above.
+// pixel is unreliable and has anchors). `device_params` and every pointer
+// inside it must be device memory.
 void LaunchDeformable(const core::PassParams* device_params, const core::AnchorMaps* device_maps,
                       const core::AnchorParams* device_anchor_params,
                       const core::PlaneMapView& planes, const core::DeformableParams& cost,
@@ -27,12 +23,6 @@ void LaunchDeformable(const core::PassParams* device_params, const core::AnchorM
 // Reliability class of every pixel (ClassifyPixel) into device_classes.
 void LaunchClassify(const core::PassParams* device_params, const core::ReliabilityParams& rp,
                     uint8_t* device_classes, int width, int height);
-
-// The local refinement of every pixel fused with its class for the next pass
-// (LocalRefineAndClassifyPixel) into device_classes.
-void LaunchLocalRefineAndClassify(const core::PassParams* device_params,
-                                  const core::ReliabilityParams& rp, uint8_t* device_classes,
-                                  int width, int height);
 
 }  // namespace cuda
 }  // namespace msp

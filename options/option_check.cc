@@ -116,7 +116,7 @@ void CheckPatchMatchStereoOptions(const PatchMatchStereoOptions& o) {
 }
 
 void CheckMspStereoOptions(const MspStereoOptions& o) {
-  MSP_CHECK_ONE_OF(o, backend, "cpu", "cuda");
+  MSP_CHECK_ONE_OF(o, backend, "auto", "cpu", "cuda");
   MSP_CHECK_NON_NEGATIVE(o, seed);
   MSP_CHECK_RANGE(o, coarsest_image_size, kMinCoarsestImageSize, 1 << 20, Interval::kClosed,
                   " (smaller images have too few pixels to match)");

@@ -113,8 +113,9 @@ void DefinePatchMatchStereoOptions(PatchMatchStereoOptions* p, OptionTable* t) {
                  "Maximum image size in either dimension; larger images, their intrinsics and the "
                  "output maps are downsized. -1 = full size.");
   MSP_ADD_OPTION(t, *p, gpu_index,
-                 "CUDA device indices separated by commas, e.g. \"0,1\"; -1 = all devices. "
-                 "Accepted, ignored: only the cuda back-end would use it (see " +
+                 "CUDA device indices separated by commas, e.g. \"0,1\"; -1 = all devices. One "
+                 "worker per listed GPU, the images spread over them; read by the cuda back-end "
+                 "only (see " +
                      MSP_OPTION_FLAG_OF(MspStereoOptions, backend) + ").");
   MSP_ADD_OPTION(t, *p, depth_min,
                  "Minimum depth of the random search; -1 = from the sparse points of each image.");
@@ -180,8 +181,9 @@ void DefinePatchMatchStereoOptions(PatchMatchStereoOptions* p, OptionTable* t) {
 
 void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
   MSP_ADD_OPTION(t, *m, backend,
-                 "{cpu, cuda}. cuda is accepted, but msp_stereo then stops with an error after "
-                 "reading the workspace: the CUDA back-end cannot run patch match yet.");
+                 "{auto, cpu, cuda}. auto: cuda when this build has the CUDA back-end and a CUDA "
+                 "device is present, else cpu (the log says which). cuda without either is an "
+                 "error.");
   MSP_ADD_OPTION(
       t, *m, seed,
       "Seed of the counter-based random numbers (>= 0); a run is a pure function of it.");

@@ -29,7 +29,7 @@ struct PatchMatchStereoOptions {
 
   // Larger image side in pixels; larger images, their K and the maps are downsized; -1 = full.
   int max_image_size = -1;
-  // accepted, ignored: CUDA device list ("0,1"; -1 = all); the cuda back-end cannot run yet.
+  // CUDA devices of the cuda back-end, one worker each ("0,1"; -1 = all devices).
   std::string gpu_index = "-1";
   // Smallest depth (scene units) of the random search; -1 (with depth_max) = from sparse points.
   double depth_min = -1.0;
@@ -84,8 +84,8 @@ struct PatchMatchStereoOptions {
 struct MspStereoOptions {
   static constexpr char kSection[] = "MspStereo";
 
-  // "cpu" or "cuda"; "cuda" stops with an error: that back-end cannot run patch match yet.
-  std::string backend = "cpu";
+  // "auto" (cuda when a CUDA device is present, else cpu), "cpu" or "cuda".
+  std::string backend = "auto";
   // Seed (>= 0) of the counter-based random generator; a run is a pure function of it.
   int seed = 0;
   // Worker threads of the CPU back-end; <= 0 = all cores.

@@ -1,25 +1,44 @@
 #include "stereo.h"
 
+#include <cstdio>
 #include <stdexcept>
 
-#include "options/option_name.h"
+#include "backend/backend_choice.h"
+#include "backend/cuda_entry.h"
+#include "backend/device_memory.h"
 #include "patch_match/patch_match_cpu.h"
 
 namespace msp {
+namespace {
 
-void CheckBackendCanRun(const MspStereoOptions& msp) {
-  if (msp.backend == "cuda") {
-    const std::string backend = MSP_OPTION_FLAG(msp, backend);
-    throw std::runtime_error(backend + " cuda: the CUDA back-end cannot run patch match yet; use " +
-                             backend + " cpu");
-  }
+BackendChoice ResolveBackend(const PatchMatchStereoOptions& patch_match,
+                             const MspStereoOptions& msp) {
+  const std::unique_ptr<DeviceQuery> query = MakeDeviceQuery();
+  return ChooseBackend(msp.backend, patch_match.gpu_index, *query);
+}
+
+}  // namespace
+
+void CheckBackendCanRun(const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp) {
+  ResolveBackend(patch_match, msp);
 }
 
 void RunStereo(const std::vector<View>& views, const std::vector<Problem>& problems,
                const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
                const std::string& scratch_dir, MapSink& sink) {
-  CheckBackendCanRun(msp);
-  RunPatchMatchCpu(views, problems, patch_match, msp, scratch_dir, sink);
+  const BackendChoice choice = ResolveBackend(patch_match, msp);
+  std::printf("%s\n", DescribeChoice(choice).c_str());
+  if (choice.backend == "cpu") {
+    RunPatchMatchCpu(views, problems, patch_match, msp, scratch_dir, sink);
+    return;
+  }
+  // Before anything runs: an image that cannot fit stops here, not in a kernel.
+  for (const std::string& line :
+       CheckDeviceMemory(views, problems, choice.workers, patch_match.geom_consistency)) {
+    std::printf("%s\n", line.c_str());
+  }
+  std::fflush(stdout);
+  RunPatchMatchCuda(views, problems, patch_match, msp, scratch_dir, sink, choice.workers);
 }
 
 }  // namespace msp

@@ -39,14 +39,16 @@ class MapSink {
 };
 
 // Throws std::runtime_error when the back-end of --MspStereo.backend cannot
-// run; a command calls it before writing anything, so that nothing partial is
-// left behind.
-void CheckBackendCanRun(const MspStereoOptions& msp);
+// run (cuda without a CUDA build or a device), std::invalid_argument for a
+// bad --PatchMatchStereo.gpu_index; a command calls it before writing
+// anything, so that nothing partial is left behind.
+void CheckBackendCanRun(const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp);
 
-// Runs the configured back-end. `scratch_dir` is where per-image state may be
-// spilled when it exceeds --PatchMatchStereo.cache_size. Throws
-// std::runtime_error when the requested back-end is not available
-// (CheckBackendCanRun).
+// Runs the back-end that --MspStereo.backend chooses (auto: CUDA when a device
+// is present, else CPU; the log says which). `scratch_dir` is where per-image
+// state may be spilled when it exceeds --PatchMatchStereo.cache_size. Throws
+// as CheckBackendCanRun, and std::runtime_error when an image does not fit
+// its GPU's free memory (CheckDeviceMemory), before anything runs.
 void RunStereo(const std::vector<View>& views, const std::vector<Problem>& problems,
                const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
                const std::string& scratch_dir, MapSink& sink);

@@ -24,6 +24,7 @@
 #include "patch_match/run_summary.h"
 #include "patch_match/segment_planes.h"
 #include "patch_match/state_cache.h"
+#include "patch_match/sweep_engine.h"
 #include "patch_match/sweeps.h"
 #include "prior/prior_driver.h"
 
@@ -82,12 +83,13 @@ class CpuRunner {
  public:
   CpuRunner(const std::vector<View>& views, const std::vector<Problem>& problems,
             const PatchMatchStereoOptions& pm, const MspStereoOptions& msp,
-            const std::string& scratch_dir, MapSink& sink)
+            const std::string& scratch_dir, MapSink& sink, SweepEngine& engine)
       : views_(views),
         problems_(problems),
         pm_(pm),
         msp_(msp),
         sink_(sink),
+        engine_(engine),
         threads_(ResolveNumThreads(msp.num_threads)),
         cache_(static_cast<size_t>(pm.cache_size * kBytesPerGigabyte), scratch_dir),
         deformable_(msp, threads_),
@@ -110,8 +112,8 @@ class CpuRunner {
       }
     }
     const std::vector<Pass> schedule = BuildPassSchedule(pm_, msp_, max_w, max_h);
-    std::printf("CPU back-end: %zu problems, %d round(s), %d thread(s)\n", run_.size(),
-                schedule.front().num_rounds, threads_);
+    std::printf("%s back-end: %zu problems, %d round(s), %d thread(s)\n", engine_.Name(),
+                run_.size(), schedule.front().num_rounds, threads_);
     for (const Pass& pass : schedule) Logf(kLogDetail, "  %s\n", ToString(pass).c_str());
     start_ = std::chrono::steady_clock::now();
     progress_.reset(
@@ -122,6 +124,7 @@ class CpuRunner {
       RunPass(pass);
       pass_times.push_back({PassLabel(pass), SecondsSince(pass_start)});
     }
+    engine_.Finish();
     if (prior_ != nullptr) {
       Logf(kLogDetail, "Segmentation prior: %d calls, %.2f s, %.1f%% of the %.2f s of the passes\n",
            prior_->NumCalls(), prior_->TotalSeconds(),
@@ -291,23 +294,22 @@ class CpuRunner {
     PixelState state = PrepareState(pass, problem);
     const core::PassParams params = MakeParams(problem, pass, prev_depth, state);
     if (pass.start == PassStart::kRandom) {
-      InitializeState(params, threads_);
+      engine_.Initialize(params);
     } else {
-      ScoreState(params, threads_);
+      engine_.Score(params);
     }
     if (pass.sweeps == PassSweeps::kDeformable) {
       RunDeformableStep(pass, params, &state);
     } else {
-      RunCheckerboardIterations(params, pass.iterations, threads_);
+      engine_.Checkerboard(params, pass.iterations);
     }
     const auto refine_start = std::chrono::steady_clock::now();
     MedianFilterState(params, threads_);
     if (pass.refine_classifies) {
       // The next pass of the round starts with the classes of these planes.
-      state.classes =
-          LocalRefineAndClassifyState(params, ReliabilityAfter(pass.index, msp_), threads_);
+      state.classes = engine_.LocalRefineAndClassify(params, ReliabilityAfter(pass.index, msp_));
     } else {
-      LocalRefineState(params, threads_);
+      engine_.LocalRefine(params);
     }
     const double refine_seconds = SecondsSince(refine_start);
     if (pass.segment_planes) RunSegmentPlanes(params, problem);
@@ -452,6 +454,7 @@ class CpuRunner {
   const PatchMatchStereoOptions& pm_;
   const MspStereoOptions& msp_;
   MapSink& sink_;
+  SweepEngine& engine_;
   const int threads_;
   StateCache cache_;
   std::vector<int> run_;
@@ -467,10 +470,17 @@ class CpuRunner {
 
 }  // namespace
 
+void RunPatchMatch(const std::vector<View>& views, const std::vector<Problem>& problems,
+                   const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
+                   const std::string& scratch_dir, MapSink& sink, SweepEngine& engine) {
+  CpuRunner(views, problems, patch_match, msp, scratch_dir, sink, engine).Run();
+}
+
 void RunPatchMatchCpu(const std::vector<View>& views, const std::vector<Problem>& problems,
                       const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
                       const std::string& scratch_dir, MapSink& sink) {
-  CpuRunner(views, problems, patch_match, msp, scratch_dir, sink).Run();
+  CpuSweepEngine engine(ResolveNumThreads(msp.num_threads));
+  RunPatchMatch(views, problems, patch_match, msp, scratch_dir, sink, engine);
 }
 
 }  // namespace msp

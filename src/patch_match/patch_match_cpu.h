@@ -9,9 +9,18 @@
 
 #include "base/mvs_input.h"
 #include "options/stereo_options.h"
+#include "patch_match/sweep_engine.h"
 #include "stereo.h"
 
 namespace msp {
+
+// The schedule with the per-pixel sweeps of `engine` (the other steps of a
+// pass run on the CPU with --MspStereo.num_threads threads).
+void RunPatchMatch(const std::vector<View>& views, const std::vector<Problem>& problems,
+                   const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
+                   const std::string& scratch_dir, MapSink& sink, SweepEngine& engine);
+
+// RunPatchMatch with the CPU's sweeps.
 
 void RunPatchMatchCpu(const std::vector<View>& views, const std::vector<Problem>& problems,
                       const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,

@@ -27,7 +27,7 @@ expect_error() {
 run "$MSP" --help
 expect_eq "--help exit code" "$rc" 0
 expect_contains "--help lists COLMAP options" "$out" "--PatchMatchStereo.window_radius arg (=5)"
-expect_contains "--help lists MspStereo options" "$out" "--MspStereo.backend arg (=cpu)"
+expect_contains "--help lists MspStereo options" "$out" "--MspStereo.backend arg (=auto)"
 run "$MSP" -h
 expect_eq "-h exit code" "$rc" 0
 
@@ -51,16 +51,19 @@ expect_eq "missing workspace: one stderr line" "$(printf '%s\n' "$err" | wc -l)"
 # The options in force are printed at start-up, one `--name value` line each.
 expect_contains "start-up print: quoted path" "$out" "--workspace_path '$missing'"
 expect_contains "start-up print: a default" "$out" "--PatchMatchStereo.window_radius 5"
-expect_contains "start-up print: an own option" "$out" "--MspStereo.backend cpu"
+expect_contains "start-up print: an own option" "$out" "--MspStereo.backend auto"
 
-# The cuda back-end cannot run: msp_stereo reads the workspace, then stops
-# before writing anything (not even the stereo/fusion.cfg it writes when missing).
+# A cuda back-end that cannot run (no CUDA in this build, no device, or, on a
+# machine with GPUs, a device that does not exist): msp_stereo reads the
+# workspace, then stops before writing anything (not even the
+# stereo/fusion.cfg it writes when missing).
 ws="$TMP/scene"
 if "$MAKE_SCENE" --output "$ws" --width 64 --height 64 --num_cameras 3 >"$TMP/scene.log" 2>&1; then
   rm "$ws/stereo/fusion.cfg"
   before=$(ls -R "$ws")
-  run "$MSP" --workspace_path "$ws" --MspStereo.backend cuda
-  expect_error "cuda back-end" "--MspStereo.backend cuda: the CUDA back-end cannot run"
+  run "$MSP" --workspace_path "$ws" --MspStereo.backend cuda --PatchMatchStereo.gpu_index 99
+  expect_error "cuda back-end" "--"
+  expect_contains "cuda back-end: says why" "$err" "CUDA"
   expect_contains "cuda back-end: the workspace is read first" "$out" "Reading workspace"
   [ ! -e "$ws/stereo/fusion.cfg" ] && pass "cuda back-end: no fusion.cfg written" ||
     fail "cuda back-end: no fusion.cfg written"

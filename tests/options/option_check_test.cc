@@ -102,7 +102,7 @@ TEST(OptionCheck, EveryOutOfRangeValueNamesOptionValueAndRange) {
       {"PatchMatchStereo.filter_geom_consistency_max_cost", "-1", ">= 0",
        [](auto* o) { o->patch_match.filter_geom_consistency_max_cost = -1; }},
       {"PatchMatchStereo.cache_size", "0", "> 0", [](auto* o) { o->patch_match.cache_size = 0; }},
-      {"MspStereo.backend", "`opencl`", "{cpu, cuda}", [](auto* o) { o->msp.backend = "opencl"; }},
+      {"MspStereo.backend", "`opencl`", "{auto, cpu, cuda}", [](auto* o) { o->msp.backend = "opencl"; }},
       {"MspStereo.seed", "-3", ">= 0", [](auto* o) { o->msp.seed = -3; }},
       {"MspStereo.window_step", "3", "[1, 2]", [](auto* o) { o->msp.window_step = 3; }},
       {"MspStereo.reliable_max_cost", "2.5", "[0, 2]",

@@ -141,7 +141,7 @@ TEST(OptionParser, DefaultsEqualColmap) {
   EXPECT_EQ(o.workspace_format, "COLMAP");
   EXPECT_EQ(o.pmvs_option_name, "option-all");
   EXPECT_EQ(o.config_path, "");
-  EXPECT_EQ(o.msp.backend, "cpu");
+  EXPECT_EQ(o.msp.backend, "auto");
   EXPECT_EQ(o.msp.seed, 0);
 }
 
@@ -331,7 +331,7 @@ TEST(OptionParser, HelpWinsAndListsEveryOption) {
   EXPECT_NE(usage.find("--PatchMatchStereo.sigma_color arg (=0.2)"), std::string::npos) << usage;
   EXPECT_NE(usage.find("--PatchMatchStereo.geom_consistency arg (=true)"), std::string::npos);
   EXPECT_NE(usage.find("Half window size"), std::string::npos);
-  EXPECT_NE(usage.find("--MspStereo.backend arg (=cpu)"), std::string::npos);
+  EXPECT_NE(usage.find("--MspStereo.backend arg (=auto)"), std::string::npos);
 }
 
 TEST(OptionParser, EveryListedOptionParses) {
@@ -409,7 +409,7 @@ TEST(OptionParser, PrintListsEveryRegisteredOptionOnceWithItsValue) {
   EXPECT_TRUE(has("--PatchMatchStereo.sigma_color 0.2"));
   EXPECT_TRUE(has("--PatchMatchStereo.geom_consistency true"));
   EXPECT_TRUE(has("--PatchMatchStereo.num_threads -1"));  // accepted, ignored: still listed
-  EXPECT_TRUE(has("--MspStereo.backend cpu"));
+  EXPECT_TRUE(has("--MspStereo.backend auto"));
   EXPECT_TRUE(has("--MspStereo.mask_path ''"));
   EXPECT_TRUE(has("--MspStereo.joint_bilateral_upsampling true"));
   EXPECT_TRUE(has("--log_level 2"));

@@ -1,0 +1,63 @@
+// The CUDA runtime's answer to the back-end choice: the devices present, with
+// their free memory and what the sweep kernels reserve on each.
+#include "backend/device_query.h"
+
+#include <cuda_runtime.h>
+
+#include <algorithm>
+
+#include "cuda/cuda_check.h"
+#include "cuda/sweep_kernels.h"
+
+namespace msp {
+namespace {
+
+// Kept free for the runtime beyond the kernels' stacks (module loading,
+// allocation granularity).
+constexpr size_t kRuntimeMarginBytes = 64u << 20;
+
+class CudaDeviceQuery : public DeviceQuery {
+ public:
+  bool CudaBuilt() const override { return true; }
+
+  std::vector<DeviceInfo> Devices(std::string* why_none) const override {
+    int count = 0;
+    const cudaError_t status = cudaGetDeviceCount(&count);
+    if (status != cudaSuccess) {
+      // No driver or no device: not an error here, the choice falls back or says why.
+      cudaGetLastError();
+      *why_none = std::string("cudaGetDeviceCount: ") + cudaGetErrorString(status);
+      return {};
+    }
+    if (count == 0) *why_none = "cudaGetDeviceCount found 0 devices";
+    std::vector<DeviceInfo> devices;
+    for (int d = 0; d < count; ++d) devices.push_back(Describe(d));
+    return devices;
+  }
+
+ private:
+  static DeviceInfo Describe(int device) {
+    cudaDeviceProp prop;
+    MSP_CUDA_CHECK(cudaGetDeviceProperties(&prop, device));
+    MSP_CUDA_CHECK(cudaSetDevice(device));
+    DeviceInfo info;
+    info.index = device;
+    info.name = prop.name;
+    info.compute_major = prop.major;
+    info.compute_minor = prop.minor;
+    MSP_CUDA_CHECK(cudaMemGetInfo(&info.free_bytes, &info.total_bytes));
+    size_t stack_limit = 0;
+    MSP_CUDA_CHECK(cudaDeviceGetLimit(&stack_limit, cudaLimitStackSize));
+    const size_t per_thread = std::max(stack_limit, cuda::MaxKernelLocalBytes());
+    info.reserve_bytes = per_thread * static_cast<size_t>(prop.multiProcessorCount) *
+                             static_cast<size_t>(prop.maxThreadsPerMultiProcessor) +
+                         kRuntimeMarginBytes;
+    return info;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<DeviceQuery> MakeDeviceQuery() { return std::make_unique<CudaDeviceQuery>(); }
+
+}  // namespace msp

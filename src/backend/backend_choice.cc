@@ -1,0 +1,65 @@
+#include "backend/backend_choice.h"
+
+#include <sstream>
+#include <stdexcept>
+
+#include "backend/gpu_index.h"
+#include "options/option_name.h"
+#include "options/stereo_options.h"
+
+namespace msp {
+namespace {
+
+constexpr double kBytesPerMebibyte = 1024.0 * 1024.0;
+
+std::string BackendFlag() { return MSP_OPTION_FLAG_OF(MspStereoOptions, backend); }
+
+}  // namespace
+
+BackendChoice ChooseBackend(const std::string& backend, const std::string& gpu_index,
+                            const DeviceQuery& query) {
+  if (backend == "cpu") return BackendChoice{"cpu", {}, "requested"};
+  if (backend != "auto" && backend != "cuda") {
+    throw std::invalid_argument(BackendFlag() + ": unknown back-end \"" + backend + "\"");
+  }
+  const bool required = backend == "cuda";
+  if (!query.CudaBuilt()) {
+    const std::string why =
+        "this msp_stereo was built without the CUDA back-end (nvcc not found or "
+        "-DCUDA_ENABLED=OFF)";
+    if (required)
+      throw std::runtime_error(BackendFlag() + " cuda: " + why + "; use " + BackendFlag() +
+                               " cpu or auto");
+    return BackendChoice{"cpu", {}, "auto: " + why};
+  }
+  std::string why_none;
+  const std::vector<DeviceInfo> devices = query.Devices(&why_none);
+  if (devices.empty()) {
+    const std::string why =
+        "no CUDA device found" + (why_none.empty() ? "" : " (" + why_none + ")");
+    if (required)
+      throw std::runtime_error(BackendFlag() + " cuda: " + why + "; use " + BackendFlag() +
+                               " cpu or auto");
+    return BackendChoice{"cpu", {}, "auto: " + why};
+  }
+  BackendChoice choice{"cuda", {}, required ? "requested" : "auto: CUDA device found"};
+  for (int d : ParseGpuIndex(gpu_index, static_cast<int>(devices.size()))) {
+    choice.workers.push_back(devices[d]);
+  }
+  return choice;
+}
+
+std::string DescribeChoice(const BackendChoice& choice) {
+  std::ostringstream out;
+  out << "Back-end: " << choice.backend << " (" << choice.reason << ")";
+  for (size_t w = 0; w < choice.workers.size(); ++w) {
+    const DeviceInfo& d = choice.workers[w];
+    out << (w == 0 ? "; " : ", ") << "worker " << w << " on GPU " << d.index << " " << d.name
+        << " (compute " << d.compute_major << "." << d.compute_minor << ", "
+        << static_cast<long long>(d.free_bytes / kBytesPerMebibyte) << " of "
+        << static_cast<long long>(d.total_bytes / kBytesPerMebibyte) << " MiB free)";
+  }
+  return out.str();
+}
+
+}  // namespace msp

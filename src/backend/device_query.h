@@ -1,0 +1,40 @@
+// What the back-end choice needs to know about CUDA devices, behind an
+// interface: the CUDA build answers with the runtime's device list
+// (cuda/device_query.cc), a build without CUDA with none, and tests with a
+// fake list.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace msp {
+
+struct DeviceInfo {
+  int index = 0;  // CUDA device ordinal
+  std::string name;
+  int compute_major = 0;
+  int compute_minor = 0;
+  size_t total_bytes = 0;
+  size_t free_bytes = 0;
+  // Memory the device needs beyond the run's buffers: the kernels' local
+  // memory (stack) for every resident thread, and a margin for the context.
+  size_t reserve_bytes = 0;
+};
+
+class DeviceQuery {
+ public:
+  virtual ~DeviceQuery() = default;
+  // False when this msp_stereo was built without the CUDA back-end.
+  virtual bool CudaBuilt() const = 0;
+  // The devices present; when there are none, *why_none says why (e.g. the
+  // runtime's error for a machine without a driver).
+  virtual std::vector<DeviceInfo> Devices(std::string* why_none) const = 0;
+};
+
+// The query of this build: CUDA's runtime in a CUDA build, else one that
+// reports no CUDA back-end.
+std::unique_ptr<DeviceQuery> MakeDeviceQuery();
+
+}  // namespace msp

@@ -1,0 +1,27 @@
+#include "patch_match/sweep_engine.h"
+
+#include "deformable/deformable_sweeps.h"
+#include "patch_match/sweeps.h"
+
+namespace msp {
+
+void CpuSweepEngine::Initialize(const core::PassParams& params) {
+  InitializeState(params, num_threads_);
+}
+
+void CpuSweepEngine::Score(const core::PassParams& params) { ScoreState(params, num_threads_); }
+
+void CpuSweepEngine::Checkerboard(const core::PassParams& params, int num_iterations) {
+  RunCheckerboardIterations(params, num_iterations, num_threads_);
+}
+
+void CpuSweepEngine::LocalRefine(const core::PassParams& params) {
+  LocalRefineState(params, num_threads_);
+}
+
+std::vector<uint8_t> CpuSweepEngine::LocalRefineAndClassify(const core::PassParams& params,
+                                                            const core::ReliabilityParams& rp) {
+  return LocalRefineAndClassifyState(params, rp, num_threads_);
+}
+
+}  // namespace msp

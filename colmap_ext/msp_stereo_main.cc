@@ -154,7 +154,7 @@ int Run(int argc, char** argv) {
   // a back-end that cannot run reads it and stops without creating the lock.
   bool backend_runs = true;
   try {
-    CheckBackendCanRun(options.msp);
+    CheckBackendCanRun(options.patch_match, options.msp);
   } catch (const std::runtime_error&) {
     backend_runs = false;
   }

@@ -62,11 +62,7 @@ ablation_init "$bundled"
 real_row() {
   local bin=$1 ws="$scratch/real"
   shift
-  rm -rf "$ws"
-  mkdir -p "$ws/stereo"
-  ln -s "$real/images" "$ws/images"
-  cp -r "$real/sparse" "$ws/"
-  cp "$real/stereo/patch-match.cfg" "$real/stereo/fusion.cfg" "$ws/stereo/"
+  link_real_workspace "$real" "$ws"
   run_logged "$scratch/real_stereo.log" /usr/bin/time -f "%e %U %M" -o "$scratch/real_time" \
     "$bin/msp_stereo" --workspace_path "$ws" "$@"
   run_logged "$scratch/real_fusion.log" "$colmap" stereo_fusion --workspace_path "$ws" \

@@ -9,16 +9,15 @@
 # copied into <output dir>, which is recreated. --sources N rewrites the copied
 # patch-match.cfg to `__auto__, N` (COLMAP's own syntax for N source views).
 set -euo pipefail
+# shellcheck source=bench/lib/run_row.sh
+source "$(dirname "$0")/lib/run_row.sh"
 root="$(cd "$(dirname "$0")/.." && pwd)"
 src=$(cd "$1" && pwd); out=$2; shift 2
 sources=""
 if [ "${1:-}" = "--sources" ]; then sources=$2; shift 2; fi
 bbox=()
 if [ "${1:-}" = "--bbox" ]; then bbox=(--bbox "$2" "$3" "$4" "$5" "$6" "$7"); shift 7; fi
-rm -rf "$out"; mkdir -p "$out/stereo"
-ln -s "$src/images" "$out/images"
-cp -r "$src/sparse" "$out/"
-cp "$src/stereo/patch-match.cfg" "$src/stereo/fusion.cfg" "$out/stereo/"
+link_real_workspace "$src" "$out"
 if [ -n "$sources" ]; then
   sed -i "s/^__auto__.*/__auto__, $sources/" "$out/stereo/patch-match.cfg"
 fi

@@ -75,3 +75,14 @@ run_row() {
   run_logged "$scratch/evaluate.log" "$bin/msp_evaluate" --workspace "$ws" \
     --fused "$ws/fused.ply" --json "$scratch/eval.json"
 }
+
+# link_real_workspace SRC OUT: OUT (recreated) as a workspace that runs on
+# the COLMAP dense workspace SRC without writing to it: images symlinked,
+# sparse/ and the .cfg files copied.
+link_real_workspace() {
+  rm -rf "$2"
+  mkdir -p "$2/stereo"
+  ln -s "$1/images" "$2/images"
+  cp -r "$1/sparse" "$2/"
+  cp "$1/stereo/patch-match.cfg" "$1/stereo/fusion.cfg" "$2/stereo/"
+}

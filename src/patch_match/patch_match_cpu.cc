@@ -24,6 +24,7 @@
 #include "patch_match/run_summary.h"
 #include "patch_match/segment_planes.h"
 #include "patch_match/state_cache.h"
+#include "patch_match/step_ledger.h"
 #include "patch_match/sweep_engine.h"
 #include "patch_match/sweeps.h"
 #include "prior/prior_driver.h"
@@ -131,6 +132,7 @@ class CpuRunner {
            100.0 * prior_->TotalSeconds() / std::max(Elapsed(), 1e-9), Elapsed());
     }
     std::printf("%s", FormatRunSummary(pass_times, ImageOutcomes()).c_str());
+    Logf(kLogDetail, "%s", ledger_.Format().c_str());
     std::fflush(stdout);
   }
 
@@ -293,30 +295,42 @@ class CpuRunner {
     const auto t0 = std::chrono::steady_clock::now();
     PixelState state = PrepareState(pass, problem);
     const core::PassParams params = MakeParams(problem, pass, prev_depth, state);
-    if (pass.start == PassStart::kRandom) {
-      engine_.Initialize(params);
-    } else {
-      engine_.Score(params);
+    ledger_.AddImagePass(pass.round,
+                         std::to_string(params.state.width) + "x" +
+                             std::to_string(params.state.height),
+                         static_cast<long>(params.state.width) * params.state.height);
+    Measured(pass, Step::kStart, [&] {
+      if (pass.start == PassStart::kRandom) {
+        engine_.Initialize(params);
+      } else {
+        engine_.Score(params);
+      }
+    });
+    Measured(pass, Step::kSweeps, [&] {
+      if (pass.sweeps == PassSweeps::kDeformable) {
+        RunDeformableStep(pass, params, &state);
+      } else {
+        engine_.Checkerboard(params, pass.iterations);
+      }
+    });
+    const double refine_seconds = Measured(pass, Step::kLocalRefine, [&] {
+      MedianFilterState(params, threads_);
+      if (pass.refine_classifies) {
+        // The next pass of the round starts with the classes of these planes.
+        state.classes = engine_.LocalRefineAndClassify(params, ReliabilityAfter(pass.index, msp_));
+      } else {
+        engine_.LocalRefine(params);
+      }
+    });
+    if (pass.segment_planes) {
+      Measured(pass, Step::kSegmentPlanes, [&] { RunSegmentPlanes(params, problem); });
     }
-    if (pass.sweeps == PassSweeps::kDeformable) {
-      RunDeformableStep(pass, params, &state);
-    } else {
-      engine_.Checkerboard(params, pass.iterations);
-    }
-    const auto refine_start = std::chrono::steady_clock::now();
-    MedianFilterState(params, threads_);
-    if (pass.refine_classifies) {
-      // The next pass of the round starts with the classes of these planes.
-      state.classes = engine_.LocalRefineAndClassify(params, ReliabilityAfter(pass.index, msp_));
-    } else {
-      engine_.LocalRefine(params);
-    }
-    const double refine_seconds = SecondsSince(refine_start);
-    if (pass.segment_planes) RunSegmentPlanes(params, problem);
-    if (pass.prior) RunPrior(pass, problem, &state);
+    if (pass.prior) Measured(pass, Step::kPrior, [&] { RunPrior(pass, problem, &state); });
     // Asked before the outputs are written: afterwards the image has them.
     const bool prior_preview = pass.prior_preview && !sink_.HasFinalOutput(problem.ref);
-    if (pass.output != PassOutput::kNone) WriteOutputs(pass, params, problem);
+    if (pass.output != PassOutput::kNone) {
+      Measured(pass, Step::kOutputs, [&] { WriteOutputs(pass, params, problem); });
+    }
     if (prior_preview) WritePriorPreview(problem, state);
     cache_.Put(problem.ref, std::move(state));
     cache_.EnforceBudget(problem.ref);
@@ -328,6 +342,17 @@ class CpuRunner {
          pass.kind == PassKind::kGeometric ? "geometric" : "photometric", pass.index + 1, n + 1,
          run_.size(), views_[problem.ref].name.c_str(), params.state.width, params.state.height,
          SecondsSince(t0), refine_seconds, progress_->Line(Elapsed()).c_str());
+  }
+
+  // Runs one step of an image-pass into the cost model; returns its seconds.
+  template <typename Fn>
+  double Measured(const Pass& pass, Step step, Fn&& run) {
+    const EvaluationCounts before = ReadEvaluationCounts();
+    const auto t0 = std::chrono::steady_clock::now();
+    run();
+    const double seconds = SecondsSince(t0);
+    ledger_.Add(pass.round, step, seconds, ReadEvaluationCounts() - before);
+    return seconds;
   }
 
   // The deformable step of a pass (DeformablePass), then its figures in the log.
@@ -466,6 +491,7 @@ class CpuRunner {
   std::chrono::steady_clock::time_point start_;
   std::unique_ptr<ProgressMeter> progress_;
   std::map<int, long> valid_pixels_;  // of the final maps written, by reference view
+  StepLedger ledger_;                 // the cost model: time and evaluations per step
 };
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "core/cost/ncc.h"
 #include "core/cost/ref_window.h"
 #include "core/cost/window_cost.h"
+#include "core/cost/evaluation_count.h"
 #include "core/math/hd.h"
 #include "core/math/homography.h"
 #include "core/math/image_view.h"
@@ -122,6 +123,8 @@ inline void WindowNccCostsAvx2(const RefWindow& w, const ImageView& ref, const I
 MSP_HD void WindowNccCosts(const RefWindow& w, const ImageView& ref, const ImageView& src,
                            const Mat3* H, uint32_t lanes, const NccParams& p, float* costs) {
 #if defined(MSP_WINDOW_SUMS_AVX2)
+  // (The scalar form counts each lane in WindowNccCost.)
+  MSP_COUNT_WINDOWS(__builtin_popcount(lanes), w.num_samples);
   WindowNccCostsAvx2(w, ref, src, H, lanes, p, costs);
 #else
   WindowNccCostsScalar(w, ref, src, H, lanes, p, costs);

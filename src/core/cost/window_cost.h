@@ -10,6 +10,7 @@
 
 #include "core/cost/ncc.h"
 #include "core/cost/ref_window.h"
+#include "core/cost/evaluation_count.h"
 #include "core/math/hd.h"
 #include "core/math/homography.h"
 #include "core/math/image_view.h"
@@ -127,6 +128,7 @@ MSP_HD float NccFromPartialSums(const PartialSums& a, int num_samples, float spr
 // centre; the others get the same cost up to float rounding.
 MSP_HD float WindowNccCost(const RefWindow& w, const ImageView& ref, const ImageView& src,
                            const Mat3& H, const NccParams& p) {
+  MSP_COUNT_WINDOWS(1, w.num_samples);
   if (w.num_samples == 0) return GeneralNccCost(ref, src, H, w.col, w.row, p);
   // A whole window implies its centre maps into the source only when the
   // centre lies within its samples, which a clipped window's may not.

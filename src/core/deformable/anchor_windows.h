@@ -12,6 +12,7 @@
 #include "core/cost/ref_window.h"
 #include "core/cost/window_cost.h"
 #include "core/deformable/deformable_limits.h"
+#include "core/cost/evaluation_count.h"
 #include "core/math/hd.h"
 #include "core/math/homography.h"
 #include "core/math/image_view.h"
@@ -227,6 +228,7 @@ inline void AnchorSumsAvx2(const AnchorWindows& w, const ImageView& src, const M
 
 MSP_HD void AnchorSumsOf(const AnchorWindows& w, const ImageView& src, const Mat3& H,
                          AnchorSums* out) {
+  MSP_COUNT_ANCHOR_WINDOWS(w.count, w.num_samples);
 #if defined(MSP_WINDOW_SUMS_AVX2)
   AnchorSumsAvx2(w, src, H, out);
 #else
@@ -331,6 +333,7 @@ MSP_HD void PrepareAnchorPairLanes(const AnchorWindows& w, const int* anchor, co
 MSP_HD void AnchorPairCosts(const AnchorWindows& w, const AnchorPairLanes& lanes,
                             const RelativePose& rel, const ImageView& ref, const ImageView& src,
                             const NccParams& anchor_ncc, float* costs) {
+  MSP_COUNT_ANCHOR_WINDOWS(lanes.count, w.num_samples);
 #if defined(MSP_WINDOW_SUMS_AVX2)
   // H = KRK - Kt m^T per lane (WarpHomography with the planes in lanes).
   WarpLanes warp = BroadcastWarp(rel.KRK, src);

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 
+#include "core/cost/evaluation_count.h"
 #include "core/deformable/anchors.h"
 #include "core/deformable/deformable_cost.h"
 #include "core/deformable/deformable_limits.h"
@@ -70,6 +71,7 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
                                   const AnchorSet& anchors, const PlaneMapView& planes,
                                   const DeformableParams& d, const AnchorSumsFn& anchor_sums,
                                   const PixelSampling& sampling = PixelSampling{}) {
+  MSP_EVALUATION_PHASE(kPropagationPhase);
   const PixelStateView& s = p.state;
   const int i = s.Index(col, row);
   const uint32_t pixel = static_cast<uint32_t>(i);
@@ -143,6 +145,7 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
     if (has[k]) Compete(p, windows, cand[k], d, weights, &winner);
   }
   if (has_sampled) Compete(p, windows, sampled, d, weights, &winner);
+  MSP_EVALUATION_PHASE(kRefinementPhase);
   Rng refine_rng =
       MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamRefine, pixel));
   for (int k = 0; k < kNumRefinementCandidates; ++k) {
@@ -153,6 +156,7 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
   s.mask[i] = mask;
   // The conventional cost of the chosen plane: what neighbours compare against.
   s.cost[i] = winner.conventional_cost;
+  MSP_EVALUATION_PHASE(kOtherPhase);
 }
 
 // The same with the anchor windows' sums computed on the spot.

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 
+#include "core/cost/evaluation_count.h"
 #include "core/cost/ncc.h"
 #include "core/cost/window_batch.h"
 #include "core/cost/window_cost.h"
@@ -433,6 +434,7 @@ MSP_HD PlaneHypothesis RefinementCandidate(const PassParams& p, int col, int row
 // One red-black update of pixel (col, row): propagation from the 8 regions
 // with view selection, then refinement on the selected views.
 MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
+  MSP_EVALUATION_PHASE(kPropagationPhase);
   const PixelStateView& s = p.state;
   const int i = s.Index(col, row);
   const uint32_t pixel = static_cast<uint32_t>(i);
@@ -490,6 +492,7 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
   } else {
     cur = cand[best];
   }
+  MSP_EVALUATION_PHASE(kRefinementPhase);
   Rng refine_rng =
       MakeRng(RngKey(p.seed, p.image_id, p.pass_id, iteration * 4u + kStreamRefine, pixel));
   for (int k = 0; k < kNumRefinementCandidates; ++k) {
@@ -506,6 +509,7 @@ MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
   s.Set(i, cur);
   s.cost[i] = best_cost;
   s.mask[i] = mask;
+  MSP_EVALUATION_PHASE(kOtherPhase);
 }
 
 }  // namespace core

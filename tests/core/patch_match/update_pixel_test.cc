@@ -243,7 +243,9 @@ TEST(UpdatePixel, WeightedViewsOnlyScoresTheLastSelection) {
         }
       }
     }
-    if (!weighted_views_only) EXPECT_GT(redrawn, 0);
+    if (!weighted_views_only) {
+      EXPECT_GT(redrawn, 0);
+    }
   }
 }
 

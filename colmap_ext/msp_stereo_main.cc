@@ -64,10 +64,10 @@ void WarnAboutIgnoredOptions(const StereoCommandOptions& options) {
   }
   if (p.num_iterations != defaults.num_iterations) {
     std::cout << "WARNING: " << MSP_OPTION_FLAG(p, num_iterations)
-              << " is ignored (the APD schedule runs " << kIterationsPerPass
+              << " is ignored (the APD schedule runs " << MSP_OPTION_FLAG(m, iterations)
               << " red-black iterations per pass: one photometric pass and, with "
-              << MSP_OPTION_FLAG(p, geom_consistency) << ", " << kNumGeometricPasses
-              << " geometric passes per round)\n";
+              << MSP_OPTION_FLAG(p, geom_consistency) << ", "
+              << MSP_OPTION_FLAG(m, geometric_passes) << " geometric passes per round)\n";
   }
   if (p.ncc_sigma != defaults.ncc_sigma ||
       p.incident_angle_sigma != defaults.incident_angle_sigma) {

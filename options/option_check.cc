@@ -120,7 +120,10 @@ void CheckMspStereoOptions(const MspStereoOptions& o) {
   MSP_CHECK_NON_NEGATIVE(o, seed);
   MSP_CHECK_RANGE(o, coarsest_image_size, kMinCoarsestImageSize, 1 << 20, Interval::kClosed,
                   " (smaller images have too few pixels to match)");
+  MSP_CHECK_RANGE(o, iterations, 1, 3);
   MSP_CHECK_RANGE(o, finest_iterations, 1, 3);
+  MSP_CHECK_RANGE(o, geometric_passes, 1, 3);  // 3 = kNumGeometricPasses, the most a round has
+  MSP_CHECK_RANGE(o, finest_geometric_passes, 1, 3);
   MSP_CHECK_RANGE(o, window_step, 1, 2);
   MSP_CHECK_RANGE(o, reliable_max_cost, 0.0, 2.0);
   MSP_CHECK_RANGE(o, reliable_single_cost, 0.0, 2.0);

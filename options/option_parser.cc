@@ -193,9 +193,18 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
   MSP_ADD_OPTION(t, *m, coarsest_image_size,
                  "Coarse-to-fine rounds halve the images until the larger side is at most this "
                  "many pixels; one round when the images are already that small.");
+  MSP_ADD_OPTION(t, *m, iterations,
+                 "Red-black iterations per pass (1..3) in every round but the finest of several; "
+                 "replaces --PatchMatchStereo.num_iterations.");
   MSP_ADD_OPTION(t, *m, finest_iterations,
                  "Red-black iterations per pass in the finest round when there are several "
                  "rounds (1..3): that round restores detail on the coarser rounds' planes.");
+  MSP_ADD_OPTION(t, *m, geometric_passes,
+                 "Geometric passes per round after its photometric pass (1..3, with "
+                 "--PatchMatchStereo.geom_consistency), in every round but the finest of several.");
+  MSP_ADD_OPTION(t, *m, finest_geometric_passes,
+                 "Geometric passes in the finest round when there are several rounds (1..3): the "
+                 "coarser rounds made the maps consistent, the finest restores detail.");
   MSP_ADD_OPTION(t, *m, finest_deformable,
                  "With several rounds, the finest round also runs the deformable step; false = "
                  "conventional sweeps there (the coarser rounds found the textureless planes).");

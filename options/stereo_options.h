@@ -94,8 +94,14 @@ struct MspStereoOptions {
   std::string mask_path = "";
   // Coarse-to-fine rounds halve the images until the larger side is at most this (pixels).
   int coarsest_image_size = 80;
-  // Red-black iterations per pass in the finest round of a run with several rounds (coarser: 3).
+  // Red-black iterations per pass in every round but the finest of several (APD: 3), and in the
+  // finest round of a run with several rounds.
+  int iterations = 3;
   int finest_iterations = 1;
+  // Geometric passes per round after the photometric one (1..3; APD: 3), in the coarser rounds
+  // and in the finest round of a run with several rounds.
+  int geometric_passes = 3;
+  int finest_geometric_passes = 3;
   // The finest round of a run with several rounds runs the deformable step; false = conventional.
   bool finest_deformable = false;
   // In the finest round of a run with several rounds, propagation candidates are scored only on

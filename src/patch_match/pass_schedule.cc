@@ -9,9 +9,10 @@ namespace msp {
 namespace {
 
 // Pass `index` of round `round`; the rest of the schedule only through
-// `num_passes` (passes per round).
+// `num_passes` (passes of this round) and `coarser_passes` (of the round
+// before, 0 in the first).
 Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, int round,
-              int num_rounds, int index, int num_passes) {
+              int num_rounds, int index, int num_passes, int coarser_passes) {
   Pass pass;
   pass.round = round;
   pass.num_rounds = num_rounds;
@@ -30,13 +31,13 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
   const bool restoring = round > 0 && last_round;
   const bool round_deformable = msp.deformable && (!restoring || msp.finest_deformable);
   const bool deformable = round_deformable && !first;
-  if (restoring) pass.iterations = msp.finest_iterations;
+  pass.iterations = restoring ? msp.finest_iterations : msp.iterations;
   // The selections the coarser rounds settled carry up with the planes.
   pass.weighted_views_only = restoring && msp.weighted_views_only;
   pass.sweeps = deformable ? PassSweeps::kDeformable : PassSweeps::kCheckerboard;
   // A round's first pass classifies with the thresholds after the coarser
   // round's last pass; the others take the classes of the previous refine.
-  if (deformable && index == 0) pass.classify_after = num_passes - 1;
+  if (deformable && index == 0) pass.classify_after = coarser_passes - 1;
   pass.refine_classifies = round_deformable && index + 1 < num_passes;
   const bool final_pass = last_round && index == num_passes - 1;
   // The prior's edges confine the passes after the one that made them, so
@@ -84,12 +85,16 @@ bool SegmentationPriorEnabled(const MspStereoOptions& msp) {
 std::vector<Pass> BuildPassSchedule(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp,
                                     int max_width, int max_height) {
   const int num_rounds = 1 + NumHalvings(max_width, max_height, msp.coarsest_image_size);
-  const int num_passes = 1 + (pm.geom_consistency ? kNumGeometricPasses : 0);
   std::vector<Pass> schedule;
+  int coarser_passes = 0;
   for (int round = 0; round < num_rounds; ++round) {
+    const bool restoring = round > 0 && round == num_rounds - 1;
+    const int geometric = restoring ? msp.finest_geometric_passes : msp.geometric_passes;
+    const int num_passes = 1 + (pm.geom_consistency ? geometric : 0);
     for (int index = 0; index < num_passes; ++index) {
-      schedule.push_back(MakePass(pm, msp, round, num_rounds, index, num_passes));
+      schedule.push_back(MakePass(pm, msp, round, num_rounds, index, num_passes, coarser_passes));
     }
+    coarser_passes = num_passes;
   }
   return schedule;
 }

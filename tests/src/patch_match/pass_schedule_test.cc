@@ -97,6 +97,32 @@ TEST(PassSchedule, WeightedViewsOnlyInTheFinestRound) {
   }
 }
 
+// Passes and iterations per round: the coarser rounds and the finest of
+// several each take their own; a round's first deformable pass classifies
+// with the thresholds after the coarser round's last pass.
+TEST(PassSchedule, PassesAndIterationsPerRound) {
+  MspStereoOptions msp;
+  msp.geometric_passes = 2;
+  msp.finest_geometric_passes = 1;
+  msp.iterations = 2;
+  msp.finest_iterations = 1;
+  msp.finest_deformable = true;
+  const std::vector<Pass> schedule =
+      BuildPassSchedule(PatchMatchStereoOptions(), msp, kSceneWidth, kSceneHeight);
+  // Rounds at 80, 160 (3 passes each) and 320 px (2 passes).
+  ASSERT_EQ(schedule.size(), 3u + 3u + 2u);
+  for (const Pass& pass : schedule) {
+    EXPECT_EQ(pass.iterations, pass.round == 2 ? 1 : 2) << ToString(pass);
+    EXPECT_EQ(pass.index, pass.round == 2 ? static_cast<int>(&pass - &schedule[6])
+                                          : static_cast<int>(&pass - &schedule[3 * pass.round]));
+  }
+  EXPECT_EQ(schedule[3].classify_after, 2);  // round 2 after round 1's third pass
+  EXPECT_EQ(schedule[6].classify_after, 2);  // round 3 after round 2's third pass
+  EXPECT_TRUE(schedule[5].refine_classifies == false);  // a round's last pass
+  EXPECT_EQ(schedule.back().output, PassOutput::kFinal);
+  EXPECT_EQ(schedule[6].output, PassOutput::kUnfiltered);
+}
+
 TEST(PassSchedule, WithoutGeometricConsistencyOnePassWritesTheFinalMaps) {
   PatchMatchStereoOptions pm;
   pm.geom_consistency = false;

@@ -121,6 +121,7 @@ void CheckMspStereoOptions(const MspStereoOptions& o) {
   MSP_CHECK_RANGE(o, coarsest_image_size, kMinCoarsestImageSize, 1 << 20, Interval::kClosed,
                   " (smaller images have too few pixels to match)");
   MSP_CHECK_RANGE(o, iterations, 1, 3);
+  MSP_CHECK_NON_NEGATIVE(o, deformable_max_image_size);
   MSP_CHECK_RANGE(o, finest_iterations, 1, 3);
   MSP_CHECK_RANGE(o, geometric_passes, 1, 3);  // 3 = kNumGeometricPasses, the most a round has
   MSP_CHECK_RANGE(o, finest_geometric_passes, 1, 3);

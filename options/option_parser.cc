@@ -205,6 +205,9 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
   MSP_ADD_OPTION(t, *m, finest_geometric_passes,
                  "Geometric passes in the finest round when there are several rounds (1..3): the "
                  "coarser rounds made the maps consistent, the finest restores detail.");
+  MSP_ADD_OPTION(t, *m, deformable_max_image_size,
+                 "Rounds whose images' larger side exceeds this many pixels run the conventional "
+                 "sweeps instead of the deformable step; 0 = no limit.");
   MSP_ADD_OPTION(t, *m, finest_deformable,
                  "With several rounds, the finest round also runs the deformable step; false = "
                  "conventional sweeps there (the coarser rounds found the textureless planes).");

@@ -1,5 +1,6 @@
 #include "patch_match/pass_schedule.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,7 @@ namespace {
 // `num_passes` (passes of this round) and `coarser_passes` (of the round
 // before, 0 in the first).
 Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, int round,
-              int num_rounds, int index, int num_passes, int coarser_passes) {
+              int num_rounds, int index, int num_passes, int coarser_passes, int image_size) {
   Pass pass;
   pass.round = round;
   pass.num_rounds = num_rounds;
@@ -29,7 +30,10 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
   // rounds found, where pixels are dearest: fewer iterations, and the
   // conventional sweeps unless finest_deformable.
   const bool restoring = round > 0 && last_round;
-  const bool round_deformable = msp.deformable && (!restoring || msp.finest_deformable);
+  const bool small_enough =
+      msp.deformable_max_image_size == 0 || image_size <= msp.deformable_max_image_size;
+  const bool round_deformable =
+      msp.deformable && small_enough && (!restoring || msp.finest_deformable);
   const bool deformable = round_deformable && !first;
   pass.iterations = restoring ? msp.finest_iterations : msp.iterations;
   // The selections the coarser rounds settled carry up with the planes.
@@ -91,8 +95,10 @@ std::vector<Pass> BuildPassSchedule(const PatchMatchStereoOptions& pm, const Msp
     const bool restoring = round > 0 && round == num_rounds - 1;
     const int geometric = restoring ? msp.finest_geometric_passes : msp.geometric_passes;
     const int num_passes = 1 + (pm.geom_consistency ? geometric : 0);
+    const int image_size = std::max(max_width, max_height) >> (num_rounds - 1 - round);
     for (int index = 0; index < num_passes; ++index) {
-      schedule.push_back(MakePass(pm, msp, round, num_rounds, index, num_passes, coarser_passes));
+      schedule.push_back(
+          MakePass(pm, msp, round, num_rounds, index, num_passes, coarser_passes, image_size));
     }
     coarser_passes = num_passes;
   }

@@ -123,6 +123,21 @@ TEST(PassSchedule, PassesAndIterationsPerRound) {
   EXPECT_EQ(schedule[6].output, PassOutput::kUnfiltered);
 }
 
+// Rounds above deformable_max_image_size run the conventional sweeps, and
+// the prior (which confines anchors) runs only after deformable passes.
+TEST(PassSchedule, DeformableOnlyUpToAnImageSize) {
+  MspStereoOptions msp;
+  msp.deformable_max_image_size = 160;
+  msp.finest_deformable = true;
+  const std::vector<Pass> schedule = BuildPassSchedule(PatchMatchStereoOptions(), msp, 640, 480);
+  ASSERT_EQ(schedule.size(), 16u);  // rounds at 80, 160, 320 and 640 px
+  for (const Pass& pass : schedule) {
+    const bool deformable = pass.round <= 1 && !(pass.round == 0 && pass.index == 0);
+    EXPECT_EQ(pass.sweeps == PassSweeps::kDeformable, deformable) << ToString(pass);
+    EXPECT_EQ(pass.prior, deformable) << ToString(pass);
+  }
+}
+
 TEST(PassSchedule, WithoutGeometricConsistencyOnePassWritesTheFinalMaps) {
   PatchMatchStereoOptions pm;
   pm.geom_consistency = false;

@@ -208,6 +208,10 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
   MSP_ADD_OPTION(t, *m, deformable_max_image_size,
                  "Rounds whose images' larger side exceeds this many pixels run the conventional "
                  "sweeps instead of the deformable step; 0 = no limit.");
+  MSP_ADD_OPTION(t, *m, finest_refine_radius,
+                 "Disparity pixels each side of the local refinement's sweep in the finest round "
+                 "when there are several rounds (1..5; the coarser rounds sweep 5): the planes "
+                 "carried up are within a coarse pixel.");
   MSP_ADD_OPTION(t, *m, finest_deformable,
                  "With several rounds, the finest round also runs the deformable step; false = "
                  "conventional sweeps there (the coarser rounds found the textureless planes).");

@@ -36,6 +36,7 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
       msp.deformable && small_enough && (!restoring || msp.finest_deformable);
   const bool deformable = round_deformable && !first;
   pass.iterations = restoring ? msp.finest_iterations : msp.iterations;
+  if (restoring) pass.refine_radius = msp.finest_refine_radius;
   // The selections the coarser rounds settled carry up with the planes.
   pass.weighted_views_only = restoring && msp.weighted_views_only;
   pass.sweeps = deformable ? PassSweeps::kDeformable : PassSweeps::kCheckerboard;
@@ -114,6 +115,9 @@ std::string ToString(const Pass& pass) {
   s += "; " + std::to_string(pass.iterations) + " x " + SweepsName(pass);
   if (pass.weighted_views_only) s += " on the selected views";
   s += pass.refine_classifies ? "; refine + classify" : "; refine";
+  if (pass.refine_radius != core::kLocalRefineRadius) {
+    s += " (+-" + std::to_string(pass.refine_radius) + " px)";
+  }
   if (pass.segment_planes) s += "; segment planes";
   if (pass.prior) s += "; prior";
   s += OutputName(pass.output);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/math/limits.h"
 #include "options/stereo_options.h"
 
 namespace msp {
@@ -56,6 +57,8 @@ struct Pass {
   PassStart start = PassStart::kRandom;
   PassSweeps sweeps = PassSweeps::kCheckerboard;
   int iterations = kIterationsPerPass;
+  // Of the local refinement when it does not classify (core::PassParams).
+  int refine_radius = core::kLocalRefineRadius;
   // Propagation scores only the views of each pixel's last selection.
   bool weighted_views_only = false;
   // kDeformable: -1 = the classes come from the previous pass's local

@@ -252,6 +252,7 @@ class CpuRunner {
     p.image_id = static_cast<uint32_t>(problem.ref);
     p.pass_id = pass.id;
     p.weighted_views_only = pass.weighted_views_only ? 1 : 0;
+    p.refine_radius = pass.refine_radius;
     p.state = state.View();
     return p;
   }

@@ -41,7 +41,9 @@ MSP_HD uint8_t LocalRefineAndClassifyPixel(const PassParams& p, int col, int row
   constexpr int kHalfWidth = kCurveHalfWidth + kLocalRefineRadius;
   CostCurveSampler sampler;
   if (!sampler.Prepare(p, col, row, kHalfWidth)) {
-    LocalRefinePixel(p, col, row);
+    PassParams full = p;
+    full.refine_radius = kLocalRefineRadius;
+    LocalRefinePixel(full, col, row);
     return kUnknown;
   }
   LazyCostCurve<CostCurveSampler> sweep(&sampler, 2 * kHalfWidth + 1);

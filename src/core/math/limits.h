@@ -13,6 +13,8 @@ constexpr int kMaxWindowRadius = 20;
 constexpr int kNumPropagationCandidates = 8;
 // Refinement hypotheses mixing current, perturbed and random depth/normal.
 constexpr int kNumRefinementCandidates = 5;
+// The local refinement's disparity sweep: pixels each side (local_refine.h).
+constexpr int kLocalRefineRadius = 5;
 
 // Cost of a failed match (no texture, outside the source image): NCC = -1.
 constexpr float kMaxCost = 2.0f;

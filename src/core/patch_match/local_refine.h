@@ -1,13 +1,12 @@
 // Local refinement after a pass (APD schedule): with the normal fixed, sweep
-// the depth over +-kLocalRefineRadius pixels of disparity and keep the best.
+// the depth over +-PassParams::refine_radius pixels of disparity (default
+// kLocalRefineRadius) and keep the best.
 #pragma once
 
 #include "core/patch_match/patch_match_kernel.h"
 
 namespace msp {
 namespace core {
-
-constexpr int kLocalRefineRadius = 5;  // disparity pixels each side
 
 // Mean distance from the reference centre to the centres of the views in `mask`
 // (all views when the mask is empty): the baseline that turns depth into disparity.
@@ -49,7 +48,7 @@ MSP_HD void LocalRefinePixel(const PassParams& p, int col, int row) {
   PrepareWindow(p, col, row, &w);
   float best_cost = AggregateViewCostBelow(p, w, cur, weights, kUnboundedCost);
   PlaneHypothesis best = cur;
-  for (int delta = -kLocalRefineRadius; delta <= kLocalRefineRadius; ++delta) {
+  for (int delta = -p.refine_radius; delta <= p.refine_radius; ++delta) {
     if (delta == 0) continue;
     PlaneHypothesis h = cur;
     h.depth = DepthAtDisparityOffset(fb, cur.depth, static_cast<float>(delta));

@@ -80,6 +80,9 @@ struct PassParams {
   uint32_t image_id;
   uint32_t pass_id;
   int weighted_views_only;  // 1: propagation scores only the views of the last selection
+  // Disparity pixels each side of LocalRefinePixel's sweep; the refinement
+  // that also classifies (refine_and_classify.h) always sweeps kLocalRefineRadius.
+  int refine_radius = kLocalRefineRadius;
   PixelStateView state;
 };
 

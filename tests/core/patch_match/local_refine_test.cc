@@ -1,0 +1,45 @@
+#include "core/patch_match/local_refine.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/support/plane_scene.h"
+
+namespace msp {
+namespace {
+
+// The disparity (f b / depth) of the reference's pixel sweep at `depth`.
+float Disparity(const core::PassParams& p, float depth) {
+  return p.ref_camera.fx * core::MeanBaseline(p, 1u) / depth;
+}
+
+// A pixel 3 disparity pixels off the textured plane: the default sweep
+// (+-5 px) lands on the plane; a sweep of +-1 px stays within 1 px of where
+// it started, and lands on the plane from 1 px off.
+TEST(LocalRefine, SweepsRefineRadiusPixelsOfDisparity) {
+  test::PlaneScene scene;
+  test::MakeScene(4.0f, true, &scene);
+  core::PassParams& p = scene.params;
+  const int col = p.ref_camera.width / 2, row = p.ref_camera.height / 2;
+  const int i = p.state.Index(col, row);
+  const float truth = Disparity(p, scene.depth);
+  const float fb = truth * scene.depth;
+
+  EXPECT_EQ(p.refine_radius, core::kLocalRefineRadius);
+  scene.state_depth[i] = core::DepthAtDisparityOffset(fb, scene.depth, 3.0f);
+  core::LocalRefinePixel(p, col, row);
+  EXPECT_NEAR(Disparity(p, scene.state_depth[i]), truth, 0.01f);
+
+  p.refine_radius = 1;
+  scene.state_depth[i] = core::DepthAtDisparityOffset(fb, scene.depth, 3.0f);
+  core::LocalRefinePixel(p, col, row);
+  EXPECT_GE(Disparity(p, scene.state_depth[i]), truth + 2.0f - 0.01f);
+
+  scene.state_depth[i] = core::DepthAtDisparityOffset(fb, scene.depth, 1.0f);
+  core::LocalRefinePixel(p, col, row);
+  EXPECT_NEAR(Disparity(p, scene.state_depth[i]), truth, 0.01f);
+}
+
+}  // namespace
+}  // namespace msp

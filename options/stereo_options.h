@@ -100,19 +100,19 @@ struct MspStereoOptions {
   int finest_iterations = 1;
   // Disparity pixels each side of the local refinement's sweep in the finest round of several
   // (1..5; the coarser rounds sweep 5).
-  int finest_refine_radius = 5;
+  int finest_refine_radius = 2;
   // Geometric passes per round after the photometric one (1..3; APD: 3), in the coarser rounds
   // and in the finest round of a run with several rounds.
   int geometric_passes = 3;
   int finest_geometric_passes = 3;
   // Rounds whose images' larger side exceeds this many pixels run the conventional sweeps, not
   // the deformable step; 0 = no limit.
-  int deformable_max_image_size = 0;
+  int deformable_max_image_size = 160;
   // The finest round of a run with several rounds runs the deformable step; false = conventional.
   bool finest_deformable = false;
   // In the finest round of a run with several rounds, propagation candidates are scored only on
   // the views of the pixel's last selection (the views that carry its weight); false = on all.
-  bool weighted_views_only = false;
+  bool weighted_views_only = true;
   // Carry planes up a round by an image-guided joint-bilateral vote (ACMM); false = nearest.
   bool joint_bilateral_upsampling = true;
   // Pixel step between window samples, 1 or 2 (paper: 2); replaces --PatchMatchStereo.window_step.

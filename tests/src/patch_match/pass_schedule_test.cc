@@ -14,10 +14,14 @@ namespace {
 constexpr int kSceneWidth = 320;
 constexpr int kSceneHeight = 240;
 
-// Options whose pyramid has one round at the scene's size.
+// Options whose pyramid has one round at the scene's size, with the
+// deformable step at any size and the finest round's own narrowing off.
 MspStereoOptions OneRound() {
   MspStereoOptions msp;
   msp.coarsest_image_size = 1000;
+  msp.deformable_max_image_size = 0;
+  msp.weighted_views_only = false;
+  msp.finest_refine_radius = core::kLocalRefineRadius;
   return msp;
 }
 
@@ -63,14 +67,14 @@ TEST(PassSchedule, DefaultOptionsRestoreDetailInTheFinestRound) {
       "round 2/3 (scale 1/2), pass 4 geometric (id 11): previous state; 3 x deformable "
       "(classes from the refine); refine; segment planes; prior\n";
   const std::string round3 =
-      "round 3/3 (scale 1/1), pass 1 photometric (id 16): upsampled state; 1 x checkerboard; "
-      "refine; segment planes; writes unfiltered maps\n"
-      "round 3/3 (scale 1/1), pass 2 geometric (id 17): previous state; 1 x checkerboard; "
-      "refine; segment planes\n"
-      "round 3/3 (scale 1/1), pass 3 geometric (id 18): previous state; 1 x checkerboard; "
-      "refine; segment planes\n"
-      "round 3/3 (scale 1/1), pass 4 geometric (id 19): previous state; 1 x checkerboard; "
-      "refine; segment planes; writes final maps\n";
+      "round 3/3 (scale 1/1), pass 1 photometric (id 16): upsampled state; 1 x checkerboard on "
+      "the selected views; refine (+-2 px); segment planes; writes unfiltered maps\n"
+      "round 3/3 (scale 1/1), pass 2 geometric (id 17): previous state; 1 x checkerboard on the "
+      "selected views; refine (+-2 px); segment planes\n"
+      "round 3/3 (scale 1/1), pass 3 geometric (id 18): previous state; 1 x checkerboard on the "
+      "selected views; refine (+-2 px); segment planes\n"
+      "round 3/3 (scale 1/1), pass 4 geometric (id 19): previous state; 1 x checkerboard on the "
+      "selected views; refine (+-2 px); segment planes; writes final maps\n";
   EXPECT_EQ(Printed(PatchMatchStereoOptions(), MspStereoOptions()), round1 + round2 + round3);
 }
 
@@ -107,6 +111,7 @@ TEST(PassSchedule, PassesAndIterationsPerRound) {
   msp.iterations = 2;
   msp.finest_iterations = 1;
   msp.finest_deformable = true;
+  msp.deformable_max_image_size = 0;
   const std::vector<Pass> schedule =
       BuildPassSchedule(PatchMatchStereoOptions(), msp, kSceneWidth, kSceneHeight);
   // Rounds at 80, 160 (3 passes each) and 320 px (2 passes).

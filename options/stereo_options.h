@@ -107,7 +107,7 @@ struct MspStereoOptions {
   int finest_geometric_passes = 3;
   // Rounds whose images' larger side exceeds this many pixels run the conventional sweeps, not
   // the deformable step; 0 = no limit.
-  int deformable_max_image_size = 160;
+  int deformable_max_image_size = 80;
   // The finest round of a run with several rounds runs the deformable step; false = conventional.
   bool finest_deformable = false;
   // In the finest round of a run with several rounds, propagation candidates are scored only on

@@ -57,15 +57,16 @@ TEST(PassSchedule, DefaultOptionsRestoreDetailInTheFinestRound) {
       "(classes from the refine); refine + classify; segment planes; prior\n"
       "round 1/3 (scale 1/4), pass 4 geometric (id 3): previous state; 3 x deformable "
       "(classes from the refine); refine; segment planes; prior\n";
+  // Above deformable_max_image_size (80): conventional.
   const std::string round2 =
-      "round 2/3 (scale 1/2), pass 1 photometric (id 8): upsampled state; 3 x deformable "
-      "(classified after pass 4); refine + classify; segment planes; prior\n"
-      "round 2/3 (scale 1/2), pass 2 geometric (id 9): previous state; 3 x deformable "
-      "(classes from the refine); refine + classify; segment planes; prior\n"
-      "round 2/3 (scale 1/2), pass 3 geometric (id 10): previous state; 3 x deformable "
-      "(classes from the refine); refine + classify; segment planes; prior\n"
-      "round 2/3 (scale 1/2), pass 4 geometric (id 11): previous state; 3 x deformable "
-      "(classes from the refine); refine; segment planes; prior\n";
+      "round 2/3 (scale 1/2), pass 1 photometric (id 8): upsampled state; 3 x checkerboard; "
+      "refine; segment planes\n"
+      "round 2/3 (scale 1/2), pass 2 geometric (id 9): previous state; 3 x checkerboard; "
+      "refine; segment planes\n"
+      "round 2/3 (scale 1/2), pass 3 geometric (id 10): previous state; 3 x checkerboard; "
+      "refine; segment planes\n"
+      "round 2/3 (scale 1/2), pass 4 geometric (id 11): previous state; 3 x checkerboard; "
+      "refine; segment planes\n";
   const std::string round3 =
       "round 3/3 (scale 1/1), pass 1 photometric (id 16): upsampled state; 1 x checkerboard on "
       "the selected views; refine (+-2 px); segment planes; writes unfiltered maps\n"

@@ -6,13 +6,14 @@
 //
 // The tolerances sit a little under what the default options reach on this
 // scene (320x240, 6 views, seed 1), so that a regression fails. Measured:
-// maps within 5 % 0.672 of valid pixels, fused accuracy at 2 % 0.796, F1 at
-// 2 % 0.677, textureless pixels within 1 % 0.223, alike-edge pixels within
-// 1 % 0.281, 9.7 % of the pixels alike-edge. The wall-coloured panel pulls
+// maps within 5 % 0.673 of valid pixels, fused accuracy at 2 % 0.770, F1 at
+// 2 % 0.662, textureless pixels within 1 % 0.217, alike-edge pixels within
+// 1 % 0.267, 9.7 % of the pixels alike-edge. The wall-coloured panel pulls
 // the wall behind it off its plane, hence the low textureless figure. The
 // fused figures swing with the seed on a scene this small (accuracy at 2 %
-// 0.80, 0.89, 0.72 for seeds 1-3): the test pins seed 1 and catches large
-// regressions, not a point.
+// 0.77, 0.88, 0.82 for seeds 1-3; 0.80, 0.89, 0.72 with the deformable step
+// in every round): the test pins seed 1 and catches large regressions, not
+// a point.
 
 #include <gtest/gtest.h>
 
@@ -36,7 +37,7 @@ namespace fs = std::filesystem;
 
 // Tolerances, a little below what the default options reach here.
 constexpr double kMinMapAccuracy5 = 0.57;         // valid pixels within 5 % depth
-constexpr double kMinFusedAccuracyCoarse = 0.77;  // fused points within 2 % of the extent
+constexpr double kMinFusedAccuracyCoarse = 0.74;  // fused points within 2 % of the extent
 constexpr double kMinF1MultiCoarse = 0.64;        // F1 over >= 3-view surface at 2 %
 constexpr double kMinTexturelessWithin1 = 0.18;   // textureless ground-truth pixels within 1 %
 // Near depth edges between alike colours (the segmentation prior's target):

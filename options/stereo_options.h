@@ -100,7 +100,7 @@ struct MspStereoOptions {
   int finest_iterations = 1;
   // Disparity pixels each side of the local refinement's sweep in the finest round of several
   // (1..5; the coarser rounds sweep 5).
-  int finest_refine_radius = 2;
+  int finest_refine_radius = 5;
   // Geometric passes per round after the photometric one (1..3; APD: 3), in the coarser rounds
   // and in the finest round of a run with several rounds.
   int geometric_passes = 3;

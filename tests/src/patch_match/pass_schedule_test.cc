@@ -69,13 +69,13 @@ TEST(PassSchedule, DefaultOptionsRestoreDetailInTheFinestRound) {
       "refine; segment planes\n";
   const std::string round3 =
       "round 3/3 (scale 1/1), pass 1 photometric (id 16): upsampled state; 1 x checkerboard on "
-      "the selected views; refine (+-2 px); segment planes; writes unfiltered maps\n"
+      "the selected views; refine; segment planes; writes unfiltered maps\n"
       "round 3/3 (scale 1/1), pass 2 geometric (id 17): previous state; 1 x checkerboard on the "
-      "selected views; refine (+-2 px); segment planes\n"
+      "selected views; refine; segment planes\n"
       "round 3/3 (scale 1/1), pass 3 geometric (id 18): previous state; 1 x checkerboard on the "
-      "selected views; refine (+-2 px); segment planes\n"
+      "selected views; refine; segment planes\n"
       "round 3/3 (scale 1/1), pass 4 geometric (id 19): previous state; 1 x checkerboard on the "
-      "selected views; refine (+-2 px); segment planes; writes final maps\n";
+      "selected views; refine; segment planes; writes final maps\n";
   EXPECT_EQ(Printed(PatchMatchStereoOptions(), MspStereoOptions()), round1 + round2 + round3);
 }
 

@@ -28,7 +28,10 @@ struct EvaluationCounters {
 };
 
 inline EvaluationCounters g_evaluation_counters{};
-inline thread_local int t_evaluation_phase = kOtherPhase;
+// One per translation unit (static): an inline thread_local would be reached
+// through a wrapper call at every access. A phase is set and read by the
+// inlined per-pixel code of one unit, so each unit's own copy is enough.
+static thread_local int t_evaluation_phase = kOtherPhase;
 
 inline void CountWindows(std::atomic<uint64_t>* kind, uint64_t windows, uint64_t samples_each) {
   const int phase = t_evaluation_phase;

@@ -1,0 +1,89 @@
+#include "colmap_ext/shared_pass_dir.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+#include <utility>
+
+#include "colmap_ext/errors.h"
+#include "colmap_ext/file_util.h"
+#include "patch_match/pixel_state_io.h"
+
+namespace msp {
+namespace {
+
+constexpr char kRunFile[] = "run.txt";
+
+// The first line where `a` and `b` differ, as "line N: `a's` here, `b's` there".
+std::string FirstDifference(const std::string& here, const std::string& there) {
+  size_t begin = 0;
+  for (int line = 1;; ++line) {
+    const size_t end_here = here.find('\n', begin), end_there = there.find('\n', begin);
+    const std::string a = here.substr(begin, end_here == std::string::npos ? end_here : end_here - begin);
+    const std::string b = there.substr(begin, end_there == std::string::npos ? end_there : end_there - begin);
+    if (a != b || end_here == std::string::npos || end_there == std::string::npos) {
+      return "line " + std::to_string(line) + ": `" + a + "` in this run, `" + b + "` there";
+    }
+    begin = end_here + 1;
+  }
+}
+
+}  // namespace
+
+std::string SharedPassDirPath(const std::string& stereo_dir) {
+  return JoinPaths(stereo_dir, "msp_shared");
+}
+
+SharedPassDir::SharedPassDir(std::string dir, std::vector<std::string> image_names,
+                             const std::string& fingerprint)
+    : dir_(std::move(dir)), image_names_(std::move(image_names)) {
+  const std::string run_file = JoinPaths(dir_, kRunFile);
+  // The first process of the run writes it; two that race both write theirs
+  // and each reads back the one that stayed.
+  if (!IsFile(run_file)) WriteFileAtomic(run_file, fingerprint);
+  const std::string recorded = ReadFileToString(run_file);
+  if (recorded != fingerprint) {
+    throw InputError(dir_ + " holds the pass states of a sharded run with other options or "
+                     "problems (" + FirstDifference(fingerprint, recorded) + " of " + run_file +
+                     "): finish that run with its options, or delete " + dir_ +
+                     " to start this one over");
+  }
+}
+
+std::string SharedPassDir::StatePath(int pass, int view) const {
+  char pass_dir[32];
+  std::snprintf(pass_dir, sizeof(pass_dir), "pass_%02d", pass);
+  return JoinPaths(JoinPaths(dir_, pass_dir), image_names_.at(view) + ".state");
+}
+
+void SharedPassDir::Save(int pass, int view, const PixelState& state) {
+  WriteFileAtomic(StatePath(pass, view), SerializePixelState(state));
+}
+
+bool SharedPassDir::Has(int pass, int view) { return IsFile(StatePath(pass, view)); }
+
+PixelState SharedPassDir::Load(int pass, int view) {
+  const std::string path = StatePath(pass, view);
+  PixelState state;
+  if (!DeserializePixelState(ReadFileToString(path), &state)) {
+    throw InputError("corrupt pass state " + path + " (not a whole state of this program); "
+                     "delete " + dir_ + " and run every shard again");
+  }
+  return state;
+}
+
+void SharedPassDir::Remove(int pass, int view) {
+  const std::string path = StatePath(pass, view);
+  std::remove(path.c_str());
+  // The pass folder goes with its last state; a folder still in use stays.
+  ::rmdir(std::filesystem::path(path).parent_path().c_str());
+}
+
+void SharedPassDir::Clear() {
+  std::error_code ignored;
+  std::filesystem::remove_all(dir_, ignored);
+}
+
+}  // namespace msp

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 #include <system_error>
 #include <utility>
 
@@ -16,17 +17,20 @@ namespace {
 
 constexpr char kRunFile[] = "run.txt";
 
-// The first line where `a` and `b` differ, as "line N: `a's` here, `b's` there".
+// The first line where `here` and `there` differ, as "line N: this run has
+// `...`, that run `...`".
 std::string FirstDifference(const std::string& here, const std::string& there) {
-  size_t begin = 0;
+  std::istringstream a(here), b(there);
+  std::string line_a, line_b;
   for (int line = 1;; ++line) {
-    const size_t end_here = here.find('\n', begin), end_there = there.find('\n', begin);
-    const std::string a = here.substr(begin, end_here == std::string::npos ? end_here : end_here - begin);
-    const std::string b = there.substr(begin, end_there == std::string::npos ? end_there : end_there - begin);
-    if (a != b || end_here == std::string::npos || end_there == std::string::npos) {
-      return "line " + std::to_string(line) + ": `" + a + "` in this run, `" + b + "` there";
+    const bool more_a = static_cast<bool>(std::getline(a, line_a));
+    const bool more_b = static_cast<bool>(std::getline(b, line_b));
+    if (!more_a) line_a.clear();
+    if (!more_b) line_b.clear();
+    if (line_a != line_b || !more_a || !more_b) {
+      return "line " + std::to_string(line) + ": this run has `" + line_a + "`, that run `" +
+             line_b + "`";
     }
-    begin = end_here + 1;
   }
 }
 
@@ -46,7 +50,7 @@ SharedPassDir::SharedPassDir(std::string dir, std::vector<std::string> image_nam
   const std::string recorded = ReadFileToString(run_file);
   if (recorded != fingerprint) {
     throw InputError(dir_ + " holds the pass states of a sharded run with other options or "
-                     "problems (" + FirstDifference(fingerprint, recorded) + " of " + run_file +
+                     "problems (" + run_file + " " + FirstDifference(fingerprint, recorded) +
                      "): finish that run with its options, or delete " + dir_ +
                      " to start this one over");
   }

@@ -10,6 +10,7 @@
 
 #include "colmap_ext/errors.h"
 #include "colmap_ext/file_util.h"
+#include "colmap_ext/stale_files.h"
 #include "patch_match/pixel_state_io.h"
 
 namespace msp {
@@ -88,6 +89,10 @@ void SharedPassDir::Remove(int pass, int view) {
 void SharedPassDir::Clear() {
   std::error_code ignored;
   std::filesystem::remove_all(dir_, ignored);
+  // Every map of the run is written, so no process of it writes any more:
+  // temporary files in stereo/ are what killed shards left (a shard does not
+  // remove them at its start, while the others write beside it).
+  RemoveStaleFiles(std::filesystem::path(dir_).parent_path().string(), "");
 }
 
 }  // namespace msp

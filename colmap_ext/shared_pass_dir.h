@@ -26,6 +26,8 @@ class SharedPassDir : public PassExchange {
   bool Has(int pass, int view) override;
   PixelState Load(int pass, int view) override;
   void Remove(int pass, int view) override;
+  // Also removes the temporary files of atomic writes under the folder's
+  // parent (stereo/) that killed processes of the run left.
   void Clear() override;
   std::string Where() const override { return dir_; }
 

@@ -18,13 +18,11 @@ shards=${1:-2}; [ $# -gt 0 ] && shift
 bin="${MSP_BIN:-$root/build/bin}/msp_stereo"
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
-
-# A copy named $1 without maps.
-fresh() {
-  cp -r "$workspace" "$scratch/$1"
-  rm -rf "$scratch/$1/stereo/depth_maps" "$scratch/$1/stereo/normal_maps" \
-         "$scratch/$1/stereo/msp" "$scratch/$1/stereo/msp_shared"
-}
+# The two copies, without maps or state.
+for copy in one sharded; do
+  cp -r "$workspace" "$scratch/$copy"
+  (cd "$scratch/$copy/stereo" && rm -rf depth_maps normal_maps msp msp_shared)
+done
 
 # Runs msp_stereo on copy $1 with log name $2 (options follow); its
 # "<wall> <user>" land in $scratch/$2.time.
@@ -34,8 +32,6 @@ run() {
     "$@" > "$scratch/$name.log" 2>&1 || { cat "$scratch/$name.log"; return 1; }
 }
 
-fresh one
-fresh sharded
 now_ms() { echo $(($(date +%s%N) / 1000000)); }
 t0=$(now_ms)
 run one one --MspStereo.num_threads "$shards" "$@"

@@ -256,12 +256,12 @@ TEST(PatchMatchCpu, MapPreviewsShowTheFinalMapsWithOrWithoutThePrior) {
 // pass barriers: each writes only its images' maps, and those are the maps
 // of the run in one process, bit for bit.
 TEST(PatchMatchCpu, ShardsTogetherGiveTheOneProcessMaps) {
-  const std::vector<View> views = test::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
-  const std::vector<Problem> problems = AllProblems(3);
-  PatchMatchStereoOptions pm;
   MspStereoOptions msp;
   msp.seed = 5;
   msp.num_threads = 1;
+  const PatchMatchStereoOptions pm;
+  const std::vector<View> views = test::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
+  const std::vector<Problem> problems = AllProblems(3);
   const test::TempDir scratch;
   MemorySink single;
   RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), single);

@@ -128,8 +128,8 @@ Locks LockWorkspace(const std::string& workspace_path, const MspStereoOptions& m
   const std::string stereo_dir = JoinPaths(workspace_path, "stereo");
   Locks locks;
   const bool sharded = IsSharded(msp);
-  locks.push_back(std::make_unique<WorkspaceLock>(stereo_dir, kWorkspaceLockName,
-                                                  sharded ? LockMode::kShared : LockMode::kExclusive));
+  locks.push_back(std::make_unique<WorkspaceLock>(
+      stereo_dir, kWorkspaceLockName, sharded ? LockMode::kShared : LockMode::kExclusive));
   if (sharded) {
     locks.push_back(
         std::make_unique<WorkspaceLock>(stereo_dir, "msp_stereo." + ShardTag(msp) + ".lock"));
@@ -212,9 +212,8 @@ int Run(int argc, char** argv) {
     if (!options.msp.shard.empty()) shared->shard = ParseShardSpec(options.msp.shard);
     shared->timeout_seconds = options.msp.shard_timeout;
     shared->name = ShardName(options.msp);
-    std::cout << shared->name << ": " << shared->owned.size() << " of "
-              << workspace.problems.size() << " reference images; pass states in "
-              << shared_dir->Where() << std::endl;
+    std::cout << shared->name << ": " << shared->owned.size() << " of " << workspace.problems.size()
+              << " reference images; pass states in " << shared_dir->Where() << std::endl;
   }
 
   try {

@@ -44,7 +44,9 @@ bool LeavesResultsAlone(const std::string& name) {
 
 }  // namespace
 
-bool IsSharded(const MspStereoOptions& msp) { return !msp.shard.empty() || !msp.image_list.empty(); }
+bool IsSharded(const MspStereoOptions& msp) {
+  return !msp.shard.empty() || !msp.image_list.empty();
+}
 
 std::string ShardName(const MspStereoOptions& msp) {
   if (!msp.shard.empty()) return "shard " + ToString(ParseShardSpec(msp.shard));

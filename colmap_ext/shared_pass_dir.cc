@@ -50,8 +50,10 @@ SharedPassDir::SharedPassDir(std::string dir, std::vector<std::string> image_nam
   if (!IsFile(run_file)) WriteFileAtomic(run_file, fingerprint);
   const std::string recorded = ReadFileToString(run_file);
   if (recorded != fingerprint) {
-    throw InputError(dir_ + " holds the pass states of a sharded run with other options or "
-                     "problems (" + run_file + " " + FirstDifference(fingerprint, recorded) +
+    throw InputError(dir_ +
+                     " holds the pass states of a sharded run with other options or "
+                     "problems (" +
+                     run_file + " " + FirstDifference(fingerprint, recorded) +
                      "): finish that run with its options, or delete " + dir_ +
                      " to start this one over");
   }
@@ -73,8 +75,10 @@ PixelState SharedPassDir::Load(int pass, int view) {
   const std::string path = StatePath(pass, view);
   PixelState state;
   if (!DeserializePixelState(ReadFileToString(path), &state)) {
-    throw InputError("corrupt pass state " + path + " (not a whole state of this program); "
-                     "delete " + dir_ + " and run every shard again");
+    throw InputError("corrupt pass state " + path +
+                     " (not a whole state of this program); "
+                     "delete " +
+                     dir_ + " and run every shard again");
   }
   return state;
 }

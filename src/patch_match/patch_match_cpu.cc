@@ -221,14 +221,17 @@ class CpuRunner {
       cache_.EnforceBudget(problems_[k].ref);
     }
     level_.reset(new Level(BuildLevel(schedule[last].halvings)));
-    std::printf("%s: resuming after %s (pass %d of %zu), whose states of its %zu images were saved\n",
-                shared_->Name().c_str(), PassLabel(schedule[last]).c_str(), last + 1,
-                schedule.size(), run_.size());
+    std::printf(
+        "%s: resuming after %s (pass %d of %zu), whose states of its %zu images were saved\n",
+        shared_->Name().c_str(), PassLabel(schedule[last]).c_str(), last + 1, schedule.size(),
+        run_.size());
     return static_cast<size_t>(last) + 1;
   }
 
   void SaveShared(size_t p) {
-    for (int k : run_) shared_->Save(static_cast<int>(p), problems_[k].ref, cache_.Get(problems_[k].ref));
+    for (int k : run_) {
+      shared_->Save(static_cast<int>(p), problems_[k].ref, cache_.Get(problems_[k].ref));
+    }
   }
 
   void ClearSharedStates() {

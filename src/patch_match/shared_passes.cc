@@ -85,8 +85,8 @@ void SharedPasses::WaitForPass(int pass, const std::string& label) {
           "; start the processes that compute them (the same command with their shard or image "
           "list), then run this one again to resume");
     }
-    std::this_thread::sleep_for(std::chrono::duration<double>(
-        std::min(sleep_seconds, run_.timeout_seconds - waited)));
+    std::this_thread::sleep_for(
+        std::chrono::duration<double>(std::min(sleep_seconds, run_.timeout_seconds - waited)));
     sleep_seconds = std::min(2 * sleep_seconds, kMaxPollSeconds);
     missing = Missing(pass);
     if (missing.empty()) {

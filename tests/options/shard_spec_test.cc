@@ -20,10 +20,15 @@ TEST(ShardSpec, ParsesKOfN) {
 }
 
 TEST(ShardSpec, RefusesMalformedAndOutOfRangeValuesNamingTheOption) {
-  const std::vector<std::pair<std::string, std::string>> cases = {
-      {"3/3", "numbered 0 to 2"},  {"0/0", "at least 1"},   {"1", "K/N"},
-      {"-1/2", "K/N"},             {"a/2", "K/N"},          {"1/ 2", "K/N"},
-      {"", "K/N"},                 {"1/2/3", "K/N"},        {"99999999999/2", "K/N"}};
+  const std::vector<std::pair<std::string, std::string>> cases = {{"3/3", "numbered 0 to 2"},
+                                                                  {"0/0", "at least 1"},
+                                                                  {"1", "K/N"},
+                                                                  {"-1/2", "K/N"},
+                                                                  {"a/2", "K/N"},
+                                                                  {"1/ 2", "K/N"},
+                                                                  {"", "K/N"},
+                                                                  {"1/2/3", "K/N"},
+                                                                  {"99999999999/2", "K/N"}};
   for (const auto& [text, why] : cases) {
     try {
       ParseShardSpec(text);

@@ -18,12 +18,15 @@
 #include "colmap_ext/file_util.h"
 #include "colmap_ext/ground_truth.h"
 #include "colmap_ext/map_writer.h"
+#include "colmap_ext/shard_setup.h"
+#include "colmap_ext/shared_pass_dir.h"
 #include "colmap_ext/stale_files.h"
 #include "colmap_ext/workspace.h"
 #include "colmap_ext/workspace_lock.h"
 #include "options/option_check.h"
 #include "options/option_name.h"
 #include "options/option_parser.h"
+#include "options/shard_spec.h"
 #include "patch_match/pass_schedule.h"
 #include "stereo.h"
 
@@ -107,18 +110,37 @@ std::optional<GroundTruthInfo> PreviewGroundTruth(const std::string& workspace_p
   }
 }
 
-// Takes the workspace lock (one msp_stereo per workspace) and removes what an
-// interrupted run left behind, which no live run can own while the lock is held.
-std::unique_ptr<WorkspaceLock> LockWorkspace(const std::string& workspace_path) {
+// Spilled state of this process: a shard's in a folder of its own, which its
+// lock keeps to itself.
+std::string ScratchDir(const std::string& workspace_path, const MspStereoOptions& msp) {
+  const std::string scratch = workspace_path + kScratchSubdir;
+  return IsSharded(msp) ? JoinPaths(scratch, ShardTag(msp)) : scratch;
+}
+
+using Locks = std::vector<std::unique_ptr<WorkspaceLock>>;
+
+// Takes the workspace lock (one msp_stereo per workspace; a shard shares it
+// with the other shards and holds its shard's own) and removes what an
+// interrupted run left behind, which no live run can own while the lock is
+// held: a shard only its own spilled state, since the other shards write
+// beside it.
+Locks LockWorkspace(const std::string& workspace_path, const MspStereoOptions& msp) {
   const std::string stereo_dir = JoinPaths(workspace_path, "stereo");
-  auto lock = std::make_unique<WorkspaceLock>(stereo_dir);
+  Locks locks;
+  const bool sharded = IsSharded(msp);
+  locks.push_back(std::make_unique<WorkspaceLock>(
+      stereo_dir, kWorkspaceLockName, sharded ? LockMode::kShared : LockMode::kExclusive));
+  if (sharded) {
+    locks.push_back(
+        std::make_unique<WorkspaceLock>(stereo_dir, "msp_stereo." + ShardTag(msp) + ".lock"));
+  }
   const std::vector<std::string> removed =
-      RemoveStaleFiles(stereo_dir, workspace_path + kScratchSubdir);
+      RemoveStaleFiles(sharded ? "" : stereo_dir, ScratchDir(workspace_path, msp));
   if (!removed.empty()) {
     std::cout << "Removed " << removed.size() << " temporary file(s) an interrupted run left, e.g. "
               << removed.front() << std::endl;
   }
-  return lock;
+  return locks;
 }
 
 // How many reference images have their final maps: what a stopped or failed
@@ -158,9 +180,9 @@ int Run(int argc, char** argv) {
   } catch (const std::runtime_error&) {
     backend_runs = false;
   }
-  std::unique_ptr<WorkspaceLock> lock;
+  Locks locks;
   if (backend_runs && IsDirectory(JoinPaths(options.workspace_path, "stereo"))) {
-    lock = LockWorkspace(options.workspace_path);
+    locks = LockWorkspace(options.workspace_path, options.msp);
   }
   std::cout << "Reading workspace " << options.workspace_path << "..." << std::endl;
   const Workspace workspace = LoadWorkspace(options);
@@ -169,18 +191,34 @@ int Run(int argc, char** argv) {
   // Before the first file is written: a back-end that cannot run leaves the
   // workspace as it was.
   CheckBackendCanRun(options.patch_match, options.msp);
-  if (lock == nullptr) lock = LockWorkspace(workspace.path);
+  if (locks.empty()) locks = LockWorkspace(workspace.path, options.msp);
   WriteFusionConfigIfMissing(workspace);
 
   std::vector<std::string> names;
   names.reserve(workspace.views.size());
   for (const View& view : workspace.views) names.push_back(view.name);
-  MapWriter writer(workspace.path, std::move(names), options.patch_match.geom_consistency,
+  MapWriter writer(workspace.path, names, options.patch_match.geom_consistency,
                    options.msp.write_previews ? PreviewGroundTruth(workspace.path) : std::nullopt);
+
+  // A shard: its problems, and the other shards' states in the workspace.
+  std::unique_ptr<SharedPassDir> shared_dir;
+  std::unique_ptr<SharedRun> shared;
+  if (IsSharded(options.msp)) {
+    shared.reset(new SharedRun);
+    shared->owned = OwnedProblems(options.msp, workspace);
+    shared_dir.reset(new SharedPassDir(SharedPassDirPath(JoinPaths(workspace.path, "stereo")),
+                                       names, SharedRunFingerprint(options, workspace)));
+    shared->exchange = shared_dir.get();
+    if (!options.msp.shard.empty()) shared->shard = ParseShardSpec(options.msp.shard);
+    shared->timeout_seconds = options.msp.shard_timeout;
+    shared->name = ShardName(options.msp);
+    std::cout << shared->name << ": " << shared->owned.size() << " of " << workspace.problems.size()
+              << " reference images; pass states in " << shared_dir->Where() << std::endl;
+  }
 
   try {
     RunStereo(workspace.views, workspace.problems, options.patch_match, options.msp,
-              workspace.path + kScratchSubdir, writer);
+              ScratchDir(workspace.path, options.msp), writer, shared.get());
   } catch (const StopRequested& stop) {
     std::cout << "Stopped by " << SignalName(stop.signal_number())
               << " between two steps; nothing is half-written. ";

@@ -42,10 +42,12 @@ std::string ReadHolder(int fd) {
 }  // namespace
 
 std::string WorkspaceLockPath(const std::string& stereo_dir) {
-  return JoinPaths(stereo_dir, "msp_stereo.lock");
+  return JoinPaths(stereo_dir, kWorkspaceLockName);
 }
 
-WorkspaceLock::WorkspaceLock(const std::string& stereo_dir) : path_(WorkspaceLockPath(stereo_dir)) {
+WorkspaceLock::WorkspaceLock(const std::string& stereo_dir, const std::string& file_name,
+                             LockMode mode)
+    : path_(JoinPaths(stereo_dir, file_name)) {
   CreateDirectories(stereo_dir);
   fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   // flock needs no write access: an existing lock file in a read-only stereo/
@@ -55,7 +57,7 @@ WorkspaceLock::WorkspaceLock(const std::string& stereo_dir) : path_(WorkspaceLoc
   if (fd_ < 0) {
     throw InputError("cannot create the workspace lock " + path_ + ": " + std::strerror(errno));
   }
-  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+  if (::flock(fd_, (mode == LockMode::kShared ? LOCK_SH : LOCK_EX) | LOCK_NB) != 0) {
     const int error = errno;
     const std::string holder = ReadHolder(fd_);
     ::close(fd_);

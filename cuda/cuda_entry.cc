@@ -16,7 +16,7 @@ namespace msp {
 void RunPatchMatchCuda(const std::vector<View>& views, const std::vector<Problem>& problems,
                        const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
                        const std::string& scratch_dir, MapSink& sink,
-                       const std::vector<DeviceInfo>& workers) {
+                       const std::vector<DeviceInfo>& workers, const SharedRun* shared) {
   if (workers.empty()) throw std::invalid_argument("RunPatchMatchCuda: no GPU worker");
   // Problem n on worker n % k, as CheckDeviceMemory assumed.
   std::map<uint32_t, int> device_of_image;
@@ -33,7 +33,7 @@ void RunPatchMatchCuda(const std::vector<View>& views, const std::vector<Problem
       "prior, upsampling and the output filter run on the CPU with %s threads\n",
       msp.num_threads > 0 ? std::to_string(msp.num_threads).c_str() : "all");
   cuda::CudaSweepEngine engine(std::move(device_of_image), workers.front().index);
-  RunPatchMatch(views, problems, patch_match, msp, scratch_dir, sink, engine);
+  RunPatchMatch(views, problems, patch_match, msp, scratch_dir, sink, engine, shared);
 }
 
 }  // namespace msp

@@ -8,6 +8,7 @@
 #include "core/deformable/synergistic_optimization.h"
 #include "core/prior/prior_limits.h"
 #include "options/option_name.h"
+#include "options/shard_spec.h"
 
 namespace msp {
 namespace {
@@ -118,6 +119,12 @@ void CheckPatchMatchStereoOptions(const PatchMatchStereoOptions& o) {
 void CheckMspStereoOptions(const MspStereoOptions& o) {
   MSP_CHECK_ONE_OF(o, backend, "auto", "cpu", "cuda");
   MSP_CHECK_NON_NEGATIVE(o, seed);
+  if (!o.shard.empty()) ParseShardSpec(o.shard);
+  if (!o.shard.empty() && !o.image_list.empty()) {
+    Fail(MSP_OPTION_NAME(o, image_list), "`" + o.image_list + "`",
+         "\"\" with " + MSP_OPTION_FLAG(o, shard) + " (a process takes a shard or a list)");
+  }
+  MSP_CHECK_POSITIVE(o, shard_timeout);
   MSP_CHECK_RANGE(o, coarsest_image_size, kMinCoarsestImageSize, 1 << 20, Interval::kClosed,
                   " (smaller images have too few pixels to match)");
   MSP_CHECK_RANGE(o, iterations, 1, 3);

@@ -36,3 +36,4 @@ inline std::string OptionName(const char* section, const char* field) {
 // of it is at hand (e.g. a help text that points at an option of another
 // struct); the struct is only named, never built.
 #define MSP_OPTION_FLAG_OF(Options, field) MSP_OPTION_FLAG(std::declval<Options>(), field)
+#define MSP_OPTION_NAME_OF(Options, field) MSP_OPTION_NAME(std::declval<Options>(), field)

@@ -188,6 +188,20 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
       t, *m, seed,
       "Seed of the counter-based random numbers (>= 0); a run is a pure function of it.");
   MSP_ADD_OPTION(t, *m, num_threads, "Worker threads of the cpu back-end; <= 0 = all cores.");
+  MSP_ADD_OPTION(t, *m, shard,
+                 "K/N (0 <= K < N): compute the reference images of problems K, K+N, ... as one "
+                 "of N processes sharing the workspace (e.g. a Slurm job array): each pass's "
+                 "states go to stereo/msp_shared and the next pass starts when every image has "
+                 "finished it. \"\" = every image in this process. Maps equal a one-process "
+                 "run's.");
+  MSP_ADD_OPTION(t, *m, image_list,
+                 "File of reference image names (as in images/, one per line, # comments) that "
+                 "this process computes, sharing the passes as with " +
+                     MSP_OPTION_FLAG(*m, shard) + "; \"\" = none. Not with " +
+                     MSP_OPTION_FLAG(*m, shard) + ".");
+  MSP_ADD_OPTION(t, *m, shard_timeout,
+                 "(0, inf). Seconds a shard waits at a pass barrier for the other processes' "
+                 "images before it stops, naming them.");
   MSP_ADD_OPTION(t, *m, mask_path,
                  "Folder of per-image segmentation mask layers; \"\" = <workspace>/masks.");
   MSP_ADD_OPTION(t, *m, coarsest_image_size,

@@ -90,6 +90,15 @@ struct MspStereoOptions {
   int seed = 0;
   // Worker threads of the CPU back-end; <= 0 = all cores.
   int num_threads = -1;
+  // "K/N": this process computes the reference images of problems K, K+N, K+2N, ... of N
+  // processes sharing the workspace, which exchange each pass's states through
+  // stereo/msp_shared (docs/cluster.md); "" = every image in this process.
+  std::string shard = "";
+  // File of reference image names (as in images/, one per line) this process computes, a shard
+  // of one's choosing; "" = none. Not with `shard`.
+  std::string image_list = "";
+  // Seconds a shard waits at a pass barrier for the other processes' images before it stops.
+  double shard_timeout = 86400.0;
   // Folder of per-image segmentation mask layers; "" = <workspace>/masks.
   std::string mask_path = "";
   // Coarse-to-fine rounds halve the images until the larger side is at most this (pixels).

@@ -25,11 +25,11 @@ void CheckBackendCanRun(const PatchMatchStereoOptions& patch_match, const MspSte
 
 void RunStereo(const std::vector<View>& views, const std::vector<Problem>& problems,
                const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
-               const std::string& scratch_dir, MapSink& sink) {
+               const std::string& scratch_dir, MapSink& sink, const SharedRun* shared) {
   const BackendChoice choice = ResolveBackend(patch_match, msp);
   std::printf("%s\n", DescribeChoice(choice).c_str());
   if (choice.backend == "cpu") {
-    RunPatchMatchCpu(views, problems, patch_match, msp, scratch_dir, sink);
+    RunPatchMatchCpu(views, problems, patch_match, msp, scratch_dir, sink, shared);
     return;
   }
   // Before anything runs: an image that cannot fit stops here, not in a kernel.
@@ -38,7 +38,7 @@ void RunStereo(const std::vector<View>& views, const std::vector<Problem>& probl
     std::printf("%s\n", line.c_str());
   }
   std::fflush(stdout);
-  RunPatchMatchCuda(views, problems, patch_match, msp, scratch_dir, sink, choice.workers);
+  RunPatchMatchCuda(views, problems, patch_match, msp, scratch_dir, sink, choice.workers, shared);
 }
 
 }  // namespace msp

@@ -9,6 +9,7 @@
 #include "base/dense_map.h"
 #include "base/mvs_input.h"
 #include "options/stereo_options.h"
+#include "patch_match/pass_exchange.h"
 
 namespace msp {
 
@@ -48,9 +49,11 @@ void CheckBackendCanRun(const PatchMatchStereoOptions& patch_match, const MspSte
 // is present, else CPU; the log says which). `scratch_dir` is where per-image
 // state may be spilled when it exceeds --PatchMatchStereo.cache_size. Throws
 // as CheckBackendCanRun, and std::runtime_error when an image does not fit
-// its GPU's free memory (CheckDeviceMemory), before anything runs.
+// its GPU's free memory (CheckDeviceMemory), before anything runs. With
+// `shared`, this process is one of several that share the run's passes
+// (patch_match/pass_exchange.h) and computes only shared->owned.
 void RunStereo(const std::vector<View>& views, const std::vector<Problem>& problems,
                const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
-               const std::string& scratch_dir, MapSink& sink);
+               const std::string& scratch_dir, MapSink& sink, const SharedRun* shared = nullptr);
 
 }  // namespace msp

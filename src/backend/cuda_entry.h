@@ -8,6 +8,7 @@
 #include "backend/device_query.h"
 #include "base/mvs_input.h"
 #include "options/stereo_options.h"
+#include "patch_match/pass_exchange.h"
 #include "stereo.h"
 
 namespace msp {
@@ -17,6 +18,6 @@ namespace msp {
 void RunPatchMatchCuda(const std::vector<View>& views, const std::vector<Problem>& problems,
                        const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
                        const std::string& scratch_dir, MapSink& sink,
-                       const std::vector<DeviceInfo>& workers);
+                       const std::vector<DeviceInfo>& workers, const SharedRun* shared = nullptr);
 
 }  // namespace msp

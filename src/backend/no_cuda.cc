@@ -21,7 +21,7 @@ std::unique_ptr<DeviceQuery> MakeDeviceQuery() { return std::make_unique<NoCudaQ
 
 void RunPatchMatchCuda(const std::vector<View>&, const std::vector<Problem>&,
                        const PatchMatchStereoOptions&, const MspStereoOptions&, const std::string&,
-                       MapSink&, const std::vector<DeviceInfo>&) {
+                       MapSink&, const std::vector<DeviceInfo>&, const SharedRun*) {
   throw std::logic_error("RunPatchMatchCuda: this build has no CUDA back-end");
 }
 

@@ -23,6 +23,7 @@
 #include "patch_match/pass_schedule.h"
 #include "patch_match/run_summary.h"
 #include "patch_match/segment_planes.h"
+#include "patch_match/shared_passes.h"
 #include "patch_match/state_cache.h"
 #include "patch_match/step_ledger.h"
 #include "patch_match/sweep_engine.h"
@@ -84,7 +85,8 @@ class CpuRunner {
  public:
   CpuRunner(const std::vector<View>& views, const std::vector<Problem>& problems,
             const PatchMatchStereoOptions& pm, const MspStereoOptions& msp,
-            const std::string& scratch_dir, MapSink& sink, SweepEngine& engine)
+            const std::string& scratch_dir, MapSink& sink, SweepEngine& engine,
+            const SharedRun* shared)
       : views_(views),
         problems_(problems),
         pm_(pm),
@@ -96,17 +98,25 @@ class CpuRunner {
         deformable_(msp, threads_),
         segmenter_(SegmenterFromName(msp.segmenter)) {
     if (SegmentationPriorEnabled(msp)) prior_.reset(new PriorDriver(views, msp, threads_));
+    if (shared != nullptr) shared_.reset(new SharedPasses(*shared, views, problems));
   }
 
   void Run() {
-    run_ = ProblemsToRun(problems_, sink_);
+    if (shared_ != nullptr && shared_->Owned().empty()) {
+      std::printf("%s: none of the %zu problems is this process's; nothing to do.\n",
+                  shared_->Name().c_str(), problems_.size());
+      return;
+    }
+    run_ = shared_ != nullptr ? SharedProblemsToRun() : ProblemsToRun(problems_, sink_);
     if (run_.empty()) {
       std::printf("All %zu reference images already have their outputs; nothing to do.\n",
                   problems_.size());
+      if (shared_ != nullptr) ClearSharedStates();
       return;
     }
     int max_w = 0, max_h = 0;
-    for (int k : run_) {
+    // A shard plans with every problem, as the one process it stands in for.
+    for (int k : shared_ != nullptr ? AllProblems() : run_) {
       for (int v : ViewsOf(problems_[k])) {
         max_w = std::max(max_w, views_[v].camera.width);
         max_h = std::max(max_h, views_[v].camera.height);
@@ -116,16 +126,22 @@ class CpuRunner {
     std::printf("%s back-end: %zu problems, %d round(s), %d thread(s)\n", engine_.Name(),
                 run_.size(), schedule.front().num_rounds, threads_);
     for (const Pass& pass : schedule) Logf(kLogDetail, "  %s\n", ToString(pass).c_str());
+    const size_t first = shared_ != nullptr ? ResumeShared(schedule) : 0;
+    const std::vector<Pass> remaining(schedule.begin() + first, schedule.end());
     start_ = std::chrono::steady_clock::now();
-    progress_.reset(
-        new ProgressMeter(static_cast<int>(schedule.size() * run_.size()), TotalWeight(schedule)));
+    progress_.reset(new ProgressMeter(static_cast<int>(remaining.size() * run_.size()),
+                                      TotalWeight(remaining)));
     std::vector<PassTime> pass_times;
-    for (const Pass& pass : schedule) {
+    for (size_t p = first; p < schedule.size(); ++p) {
       const auto pass_start = std::chrono::steady_clock::now();
-      RunPass(pass);
-      pass_times.push_back({PassLabel(pass), SecondsSince(pass_start)});
+      // The barrier: the previous pass finished on every image, wherever it ran.
+      if (shared_ != nullptr && p > 0) shared_->WaitForPass(p - 1, PassLabel(schedule[p - 1]));
+      RunPass(schedule[p], p);
+      if (shared_ != nullptr && p + 1 < schedule.size()) SaveShared(p);
+      pass_times.push_back({PassLabel(schedule[p]), SecondsSince(pass_start)});
     }
     engine_.Finish();
+    if (shared_ != nullptr) ClearSharedStates();
     if (prior_ != nullptr) {
       Logf(kLogDetail, "Segmentation prior: %d calls, %.2f s, %.1f%% of the %.2f s of the passes\n",
            prior_->NumCalls(), prior_->TotalSeconds(),
@@ -166,7 +182,9 @@ class CpuRunner {
   // wrote, or as kept from an earlier run.
   std::vector<ImageOutcome> ImageOutcomes() const {
     std::vector<ImageOutcome> outcomes;
-    for (const Problem& problem : problems_) {
+    // A shard reports its own images: the others' maps are their processes'.
+    for (int k : shared_ != nullptr ? shared_->Owned() : AllProblems()) {
+      const Problem& problem = problems_[k];
       ImageOutcome outcome;
       outcome.name = views_[problem.ref].name;
       outcome.width = views_[problem.ref].camera.width;
@@ -176,6 +194,51 @@ class CpuRunner {
       outcomes.push_back(outcome);
     }
     return outcomes;
+  }
+
+  std::vector<int> AllProblems() const {
+    std::vector<int> all(problems_.size());
+    for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
+    return all;
+  }
+
+  // A shared run computes its own problems whenever any problem lacks its
+  // final maps: the others' geometric passes read their states.
+  std::vector<int> SharedProblemsToRun() const {
+    for (const Problem& problem : problems_) {
+      if (!sink_.HasFinalOutput(problem.ref)) return shared_->Owned();
+    }
+    return {};
+  }
+
+  // A restarted process continues after the last pass whose states of all its
+  // images it saved: their states, and the round's images, as they were then.
+  size_t ResumeShared(const std::vector<Pass>& schedule) {
+    const int last = shared_->LastSavedPass(static_cast<int>(schedule.size()));
+    if (last < 0) return 0;
+    for (int k : run_) {
+      cache_.Put(problems_[k].ref, shared_->Load(last, problems_[k].ref));
+      cache_.EnforceBudget(problems_[k].ref);
+    }
+    level_.reset(new Level(BuildLevel(schedule[last].halvings)));
+    std::printf(
+        "%s: resuming after %s (pass %d of %zu), whose states of its %zu images were saved\n",
+        shared_->Name().c_str(), PassLabel(schedule[last]).c_str(), last + 1, schedule.size(),
+        run_.size());
+    return static_cast<size_t>(last) + 1;
+  }
+
+  void SaveShared(size_t p) {
+    for (int k : run_) {
+      shared_->Save(static_cast<int>(p), problems_[k].ref, cache_.Get(problems_[k].ref));
+    }
+  }
+
+  void ClearSharedStates() {
+    if (shared_->ClearWhenComplete([this](int view) { return sink_.HasFinalOutput(view); })) {
+      std::printf("%s: every reference image has its final maps; the shared states are removed\n",
+                  shared_->Name().c_str());
+    }
   }
 
   std::vector<int> ViewsOf(const Problem& problem) const {
@@ -258,11 +321,14 @@ class CpuRunner {
   }
 
   // One pass over every problem; a round's first pass starts the round.
-  void RunPass(const Pass& pass) {
+  void RunPass(const Pass& pass, size_t p) {
     if (pass.index == 0) StartRound(pass);
     // Jacobi: every problem reads its sources' depths as they were before this pass.
-    const std::map<int, DenseMap> prev_depth =
-        pass.kind == PassKind::kGeometric ? CurrentDepths() : std::map<int, DenseMap>();
+    std::map<int, DenseMap> prev_depth;
+    if (pass.kind == PassKind::kGeometric) {
+      prev_depth = CurrentDepths();
+      if (shared_ != nullptr) shared_->AddSourceDepths(static_cast<int>(p) - 1, &prev_depth);
+    }
     for (size_t n = 0; n < run_.size(); ++n) {
       // The safe point between image-passes: nothing is half-written here.
       ThrowIfStopRequested();
@@ -487,6 +553,7 @@ class CpuRunner {
   std::unique_ptr<Level> level_;        // the current round's
   std::unique_ptr<Level> coarser_;      // the previous round's, null in the first round
   std::unique_ptr<PriorDriver> prior_;  // null = no segmentation prior
+  std::unique_ptr<SharedPasses> shared_;  // null = this process runs every problem
   DeformablePass deformable_;           // the deformable step and its buffers
   const Segmenter segmenter_;           // of segment planes
   std::chrono::steady_clock::time_point start_;
@@ -499,15 +566,16 @@ class CpuRunner {
 
 void RunPatchMatch(const std::vector<View>& views, const std::vector<Problem>& problems,
                    const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
-                   const std::string& scratch_dir, MapSink& sink, SweepEngine& engine) {
-  CpuRunner(views, problems, patch_match, msp, scratch_dir, sink, engine).Run();
+                   const std::string& scratch_dir, MapSink& sink, SweepEngine& engine,
+                   const SharedRun* shared) {
+  CpuRunner(views, problems, patch_match, msp, scratch_dir, sink, engine, shared).Run();
 }
 
 void RunPatchMatchCpu(const std::vector<View>& views, const std::vector<Problem>& problems,
                       const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
-                      const std::string& scratch_dir, MapSink& sink) {
+                      const std::string& scratch_dir, MapSink& sink, const SharedRun* shared) {
   CpuSweepEngine engine(ResolveNumThreads(msp.num_threads));
-  RunPatchMatch(views, problems, patch_match, msp, scratch_dir, sink, engine);
+  RunPatchMatch(views, problems, patch_match, msp, scratch_dir, sink, engine, shared);
 }
 
 }  // namespace msp

@@ -9,21 +9,26 @@
 
 #include "base/mvs_input.h"
 #include "options/stereo_options.h"
+#include "patch_match/pass_exchange.h"
 #include "patch_match/sweep_engine.h"
 #include "stereo.h"
 
 namespace msp {
 
 // The schedule with the per-pixel sweeps of `engine` (the other steps of a
-// pass run on the CPU with --MspStereo.num_threads threads).
+// pass run on the CPU with --MspStereo.num_threads threads). With `shared`,
+// this process computes only shared->owned and meets the other processes of
+// the run at a barrier after every pass (shared_passes.h).
 void RunPatchMatch(const std::vector<View>& views, const std::vector<Problem>& problems,
                    const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
-                   const std::string& scratch_dir, MapSink& sink, SweepEngine& engine);
+                   const std::string& scratch_dir, MapSink& sink, SweepEngine& engine,
+                   const SharedRun* shared = nullptr);
 
 // RunPatchMatch with the CPU's sweeps.
 
 void RunPatchMatchCpu(const std::vector<View>& views, const std::vector<Problem>& problems,
                       const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
-                      const std::string& scratch_dir, MapSink& sink);
+                      const std::string& scratch_dir, MapSink& sink,
+                      const SharedRun* shared = nullptr);
 
 }  // namespace msp

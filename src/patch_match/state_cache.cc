@@ -6,40 +6,14 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
+#include "patch_match/pixel_state_io.h"
+
 namespace msp {
-namespace {
-
-template <typename T>
-void WriteVector(std::ofstream& out, const std::vector<T>& v) {
-  out.write(reinterpret_cast<const char*>(v.data()),
-            static_cast<std::streamsize>(v.size() * sizeof(T)));
-}
-
-template <typename T>
-void ReadVector(std::ifstream& in, std::vector<T>* v) {
-  in.read(reinterpret_cast<char*>(v->data()), static_cast<std::streamsize>(v->size() * sizeof(T)));
-}
-
-// A per-pixel byte plane that may be empty (edges, classes): a flag, then the bytes.
-void WriteOptionalPlane(std::ofstream& out, const std::vector<uint8_t>& v) {
-  const int present = v.empty() ? 0 : 1;
-  out.write(reinterpret_cast<const char*>(&present), sizeof(present));
-  WriteVector(out, v);
-}
-
-void ReadOptionalPlane(std::ifstream& in, size_t num_pixels, std::vector<uint8_t>* v) {
-  int present = 0;
-  in.read(reinterpret_cast<char*>(&present), sizeof(present));
-  if (!present) return;
-  v->resize(num_pixels);
-  ReadVector(in, v);
-}
-
-}  // namespace
 
 StateCache::StateCache(size_t budget_bytes, std::string scratch_dir)
     : budget_bytes_(budget_bytes), scratch_dir_(std::move(scratch_dir)) {}
@@ -65,16 +39,11 @@ PixelState& StateCache::Get(int id) {
     auto sp = spilled_.find(id);
     if (sp == spilled_.end()) throw std::logic_error("StateCache: unknown image state");
     std::ifstream in(sp->second, std::ios::binary);
-    int size[2] = {0, 0};
-    in.read(reinterpret_cast<char*>(size), sizeof(size));
-    PixelState state(size[0], size[1]);
-    ReadVector(in, &state.depth);
-    ReadVector(in, &state.normal);
-    ReadVector(in, &state.cost);
-    ReadVector(in, &state.mask);
-    ReadOptionalPlane(in, state.depth.size(), &state.edges);
-    ReadOptionalPlane(in, state.depth.size(), &state.classes);
-    if (!in) throw std::runtime_error("cannot read spilled state " + sp->second);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    PixelState state;
+    if (!DeserializePixelState(bytes, &state)) {
+      throw std::runtime_error("cannot read spilled state " + sp->second);
+    }
     std::remove(sp->second.c_str());
     spilled_.erase(sp);
     resident_bytes_ += state.Bytes();
@@ -115,14 +84,7 @@ void StateCache::Spill(int id) {
   mkdir(scratch_dir_.c_str(), 0755);
   const std::string path = SpillPath(id);
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  const int size[2] = {it->second.width, it->second.height};
-  out.write(reinterpret_cast<const char*>(size), sizeof(size));
-  WriteVector(out, it->second.depth);
-  WriteVector(out, it->second.normal);
-  WriteVector(out, it->second.cost);
-  WriteVector(out, it->second.mask);
-  WriteOptionalPlane(out, it->second.edges);
-  WriteOptionalPlane(out, it->second.classes);
+  out << SerializePixelState(it->second);
   if (!out) throw std::runtime_error("cannot spill state to " + path + " (disk full?)");
   resident_bytes_ -= it->second.Bytes();
   resident_.erase(it);

@@ -60,6 +60,33 @@ TEST(WorkspaceLockTest, AKilledHolderDoesNotBlock) {
   ::close(ready[1]);
 }
 
+// Shards share the workspace lock and each holds its own: two shards run
+// side by side, a second process of one shard and an unsharded run do not.
+TEST(WorkspaceLockTest, ShardsShareTheWorkspaceLockAndEachHoldsItsOwn) {
+  test::TempDir dir;
+  const std::string stereo = dir / "stereo";
+  WorkspaceLock shared_a(stereo, kWorkspaceLockName, LockMode::kShared);
+  WorkspaceLock shard_a(stereo, "msp_stereo.shard-0-of-2.lock");
+  WorkspaceLock shared_b(stereo, kWorkspaceLockName, LockMode::kShared);
+  WorkspaceLock shard_b(stereo, "msp_stereo.shard-1-of-2.lock");
+  try {
+    WorkspaceLock again(stereo, "msp_stereo.shard-1-of-2.lock");
+    FAIL() << "a second process of shard 1/2 was let in";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(stereo + "/msp_stereo.shard-1-of-2.lock"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(WorkspaceLock unsharded(stereo), InputError);
+}
+
+TEST(WorkspaceLockTest, AnUnshardedRunKeepsShardsOut) {
+  test::TempDir dir;
+  const std::string stereo = dir / "stereo";
+  WorkspaceLock unsharded(stereo);
+  EXPECT_THROW(WorkspaceLock shard(stereo, kWorkspaceLockName, LockMode::kShared), InputError);
+}
+
 TEST(WorkspaceLockTest, AnUncreatableLockFileIsNamed) {
   test::TempDir dir;
   test::WriteRaw(dir / "stereo", "a file where the folder should be");

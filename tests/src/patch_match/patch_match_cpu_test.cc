@@ -6,9 +6,11 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "prior/label_layers.h"
+#include "tests/support/memory_exchange.h"
 #include "tests/support/synthetic_views.h"
 #include "tests/support/temp_dir.h"
 
@@ -248,6 +250,48 @@ TEST(PatchMatchCpu, MapPreviewsShowTheFinalMapsWithOrWithoutThePrior) {
   RunPatchMatchCpu(views, AllProblems(3), pm, msp, scratch.path(), sink);
   EXPECT_EQ(sink.maps.size(), 6u);
   EXPECT_TRUE(sink.map_previews.empty());
+}
+
+// Two shards of one run, each in a thread with its own sink, meet at the
+// pass barriers: each writes only its images' maps, and those are the maps
+// of the run in one process, bit for bit.
+TEST(PatchMatchCpu, ShardsTogetherGiveTheOneProcessMaps) {
+  MspStereoOptions msp;
+  msp.seed = 5;
+  msp.num_threads = 1;
+  const PatchMatchStereoOptions pm;
+  const std::vector<View> views = test::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
+  const std::vector<Problem> problems = AllProblems(3);
+  const test::TempDir scratch;
+  MemorySink single;
+  RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), single);
+  test::MemoryExchange exchange;
+  MemorySink sinks[2];
+  std::vector<std::thread> shards;
+  for (int k = 0; k < 2; ++k) {
+    shards.emplace_back([&, k] {
+      SharedRun run;
+      run.exchange = &exchange;
+      run.owned = ProblemsOfShard(3, ShardSpec{k, 2});
+      run.shard = ShardSpec{k, 2};
+      run.timeout_seconds = 120;
+      run.name = "shard " + std::to_string(k) + "/2";
+      RunPatchMatchCpu(views, problems, pm, msp, scratch / ("shard" + std::to_string(k)),
+                       sinks[k], &run);
+    });
+  }
+  for (std::thread& shard : shards) shard.join();
+  size_t written = 0;
+  for (const auto& entry : single.maps) {
+    const MemorySink& owner = sinks[entry.first.first % 2];
+    ASSERT_TRUE(owner.maps.count(entry.first)) << entry.first.first << " " << entry.first.second;
+    EXPECT_EQ(owner.maps.at(entry.first).first.data, entry.second.first.data);
+    EXPECT_EQ(owner.maps.at(entry.first).second.data, entry.second.second.data);
+    ++written;
+  }
+  EXPECT_EQ(sinks[0].maps.size() + sinks[1].maps.size(), written);
+  // The sinks say no map is final, so the states stay (a file sink's would go).
+  EXPECT_EQ(exchange.Clears(), 0);
 }
 
 TEST(PatchMatchCpu, SkipsImagesWithFinalOutputs) {

@@ -71,9 +71,7 @@ TEST(DeformableParity, ClassifyGivesTheSameClasses) {
   const std::vector<uint8_t> cpu = CpuSweepEngine(1).Classify(s.params, rp);
   const std::vector<uint8_t> gpu = GpuEngine().Classify(s.params, rp);
   ASSERT_EQ(cpu.size(), gpu.size());
-  int differ = 0;
-  for (size_t i = 0; i < cpu.size(); ++i) differ += cpu[i] != gpu[i];
-  EXPECT_LE(static_cast<double>(differ) / cpu.size(), test::kMaxFlippedShare);
+  EXPECT_LE(test::DifferingShare(cpu, gpu), test::kMaxFlippedShare);
 }
 
 // Anchors of the first iteration come from the same snapshot on both, so

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace msp {
 namespace test {
@@ -22,6 +24,13 @@ double FlippedShare(const State& a, const State& b) {
     if (!same_depth || a.mask[i] != b.mask[i]) ++flipped;
   }
   return static_cast<double>(flipped) / a.depth.size();
+}
+
+// Share of the entries of two equally long class maps that differ.
+inline double DifferingShare(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+  int differ = 0;
+  for (size_t i = 0; i < a.size(); ++i) differ += a[i] != b[i];
+  return static_cast<double>(differ) / a.size();
 }
 
 }  // namespace test

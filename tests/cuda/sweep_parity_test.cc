@@ -132,9 +132,7 @@ TEST(SweepParity, LocalRefineAndClassifyGivesTheSameClasses) {
   const std::vector<uint8_t> cpu_classes = CpuSweepEngine(1).LocalRefineAndClassify(cpu.params, rp);
   const std::vector<uint8_t> gpu_classes = GpuEngine().LocalRefineAndClassify(gpu.params, rp);
   ASSERT_EQ(cpu_classes.size(), gpu_classes.size());
-  int differ = 0;
-  for (size_t i = 0; i < cpu_classes.size(); ++i) differ += cpu_classes[i] != gpu_classes[i];
-  EXPECT_LE(static_cast<double>(differ) / cpu_classes.size(), test::kMaxFlippedShare);
+  EXPECT_LE(test::DifferingShare(cpu_classes, gpu_classes), test::kMaxFlippedShare);
   EXPECT_LE(test::FlippedShare(cpu, gpu), test::kMaxFlippedShare);
 }
 

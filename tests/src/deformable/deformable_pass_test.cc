@@ -129,6 +129,43 @@ TEST(DeformablePass, ClassifiesTheStateAtARoundStart) {
   EXPECT_EQ(report.num_unreliable, expected.num_unreliable);
 }
 
+// The CPU engine, counting the per-pixel steps it is asked for.
+class CountingEngine : public CpuSweepEngine {
+ public:
+  CountingEngine() : CpuSweepEngine(kNumThreads) {}
+  std::vector<uint8_t> Classify(const core::PassParams& params,
+                                const core::ReliabilityParams& rp) override {
+    ++classified;
+    return CpuSweepEngine::Classify(params, rp);
+  }
+  DeformableStats DeformableIterations(const core::PassParams& params, const ReliabilityMaps& maps,
+                                       const DeformableSettings& settings, int num_iterations,
+                                       std::vector<core::PriorAnchors>* prior_anchors) override {
+    ++iterated;
+    return CpuSweepEngine::DeformableIterations(params, maps, settings, num_iterations,
+                                                prior_anchors);
+  }
+  int classified = 0;
+  int iterated = 0;
+};
+
+// The classification and the iterations run on the engine the step is given
+// (the CUDA back-end's in a CUDA run), with the result of the step's own.
+TEST(DeformablePass, RunsItsPerPixelStepsOnTheGivenEngine) {
+  Scene given, own;
+  InitializeState(given.params, kNumThreads);
+  InitializeState(own.params, kNumThreads);
+  Pass pass = DeformablePassWithClasses();
+  pass.classify_after = 0;
+  CountingEngine engine;
+  DeformablePass(MspStereoOptions(), kNumThreads, &engine).Run(pass, given.params, &given.state);
+  DeformablePass(MspStereoOptions(), kNumThreads).Run(pass, own.params, &own.state);
+  EXPECT_EQ(engine.classified, 1);
+  EXPECT_EQ(engine.iterated, 1);
+  EXPECT_EQ(given.state.depth, own.state.depth);
+  EXPECT_EQ(given.state.mask, own.state.mask);
+}
+
 TEST(DeformablePass, ScheduleAndStateMustAgree) {
   Scene s;
   s.SetTruePlanes();

@@ -28,9 +28,10 @@ void RunPatchMatchCuda(const std::vector<View>& views, const std::vector<Problem
     }
   }
   std::printf(
-      "CUDA back-end: random initialisation, scoring, red-black sweeps and the local refinement "
-      "run on the GPU; the deformable step, the median filter, segment planes, the segmentation "
-      "prior, upsampling and the output filter run on the CPU with %s threads\n",
+      "CUDA back-end: random initialisation, scoring, red-black sweeps, the local refinement and "
+      "the deformable step's classification, anchor searches and sweeps run on the GPU; the "
+      "nearest reliable pixels, the median filter, segment planes, the segmentation prior, "
+      "upsampling and the output filter run on the CPU with %s threads\n",
       msp.num_threads > 0 ? std::to_string(msp.num_threads).c_str() : "all");
   cuda::CudaSweepEngine engine(std::move(device_of_image), workers.front().index);
   RunPatchMatch(views, problems, patch_match, msp, scratch_dir, sink, engine, shared);

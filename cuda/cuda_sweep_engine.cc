@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "cuda/cuda_check.h"
+#include "cuda/deformable_kernels.h"
 #include "cuda/device_buffer.h"
 #include "cuda/device_pass.h"
 #include "cuda/sweep_kernels.h"
@@ -22,18 +23,19 @@ constexpr double kBytesPerMebibyte = 1024.0 * 1024.0;
 CudaSweepEngine::CudaSweepEngine(std::map<uint32_t, int> device_of_image, int default_device)
     : device_of_image_(std::move(device_of_image)), default_device_(default_device) {}
 
-void CudaSweepEngine::SelectDevice(const core::PassParams& params) {
+int CudaSweepEngine::ImageDevice(const core::PassParams& params) {
   const auto it = device_of_image_.find(params.image_id);
   const int device = it != device_of_image_.end() ? it->second : default_device_;
   MSP_CUDA_CHECK(cudaSetDevice(device));
   if (std::find(used_devices_.begin(), used_devices_.end(), device) == used_devices_.end()) {
     used_devices_.push_back(device);
   }
+  return device;
 }
 
 template <typename Step>
 void CudaSweepEngine::OnDevice(const core::PassParams& params, Step step) {
-  SelectDevice(params);
+  ImageDevice(params);
   const DevicePass pass(params);
   step(pass);
   pass.DownloadState(params);
@@ -67,18 +69,32 @@ void CudaSweepEngine::LocalRefine(const core::PassParams& params) {
   });
 }
 
-std::vector<uint8_t> CudaSweepEngine::LocalRefineAndClassify(const core::PassParams& params,
-                                                             const core::ReliabilityParams& rp) {
+template <typename Launch>
+std::vector<uint8_t> CudaSweepEngine::ClassesOnDevice(const core::PassParams& params,
+                                                      Launch launch) {
   std::vector<uint8_t> classes;
   OnDevice(params, [&](const DevicePass& pass) {
     const size_t n = static_cast<size_t>(pass.width()) * pass.height();
     DeviceBuffer<uint8_t> device_classes(n);
-    LaunchLocalRefineAndClassify(pass.params(), rp, device_classes.data(), pass.width(),
-                                 pass.height());
+    launch(pass, device_classes.data());
     classes.resize(n);
     device_classes.Download(classes.data(), n);
   });
   return classes;
+}
+
+std::vector<uint8_t> CudaSweepEngine::LocalRefineAndClassify(const core::PassParams& params,
+                                                             const core::ReliabilityParams& rp) {
+  return ClassesOnDevice(params, [&](const DevicePass& pass, uint8_t* classes) {
+    LaunchLocalRefineAndClassify(pass.params(), rp, classes, pass.width(), pass.height());
+  });
+}
+
+std::vector<uint8_t> CudaSweepEngine::Classify(const core::PassParams& params,
+                                               const core::ReliabilityParams& rp) {
+  return ClassesOnDevice(params, [&](const DevicePass& pass, uint8_t* classes) {
+    LaunchClassify(pass.params(), rp, classes, pass.width(), pass.height());
+  });
 }
 
 void CudaSweepEngine::Finish() {

@@ -23,6 +23,9 @@ class DevicePass {
   const core::PassParams* params() const { return params_.data(); }
   int width() const { return width_; }
   int height() const { return height_; }
+  // The device state's planes (depth; normal as 3 planes of width * height).
+  float* depth() const { return depth_.data(); }
+  float* normal() const { return normal_.data(); }
   // Copies the device state into the host arrays of host.state.
   void DownloadState(const core::PassParams& host) const;
 

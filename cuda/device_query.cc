@@ -1,20 +1,14 @@
 // The CUDA runtime's answer to the back-end choice: the devices present, with
-// their free memory and what the sweep kernels reserve on each.
+// their free memory and what the kernels reserve on each.
 #include "backend/device_query.h"
 
 #include <cuda_runtime.h>
 
-#include <algorithm>
-
 #include "cuda/cuda_check.h"
-#include "cuda/sweep_kernels.h"
+#include "cuda/kernel_reserve.h"
 
 namespace msp {
 namespace {
-
-// Kept free for the runtime beyond the kernels' stacks (module loading,
-// allocation granularity).
-constexpr size_t kRuntimeMarginBytes = 64u << 20;
 
 class CudaDeviceQuery : public DeviceQuery {
  public:
@@ -46,12 +40,7 @@ class CudaDeviceQuery : public DeviceQuery {
     info.compute_major = prop.major;
     info.compute_minor = prop.minor;
     MSP_CUDA_CHECK(cudaMemGetInfo(&info.free_bytes, &info.total_bytes));
-    size_t stack_limit = 0;
-    MSP_CUDA_CHECK(cudaDeviceGetLimit(&stack_limit, cudaLimitStackSize));
-    const size_t per_thread = std::max(stack_limit, cuda::MaxKernelLocalBytes());
-    info.reserve_bytes = per_thread * static_cast<size_t>(prop.multiProcessorCount) *
-                             static_cast<size_t>(prop.maxThreadsPerMultiProcessor) +
-                         kRuntimeMarginBytes;
+    info.reserve_bytes = cuda::KernelReserveBytes(device);
     return info;
   }
 };

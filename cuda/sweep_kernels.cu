@@ -50,13 +50,6 @@ __global__ void LocalRefineAndClassifyKernel(const core::PassParams* params,
       core::LocalRefineAndClassifyPixel(*params, col, row, rp);
 }
 
-template <typename Kernel>
-size_t LocalBytes(Kernel kernel) {
-  cudaFuncAttributes attributes;
-  MSP_CUDA_CHECK(cudaFuncGetAttributes(&attributes, kernel));
-  return attributes.localSizeBytes;
-}
-
 }  // namespace
 
 void LaunchInitialize(const core::PassParams* device_params, int width, int height) {
@@ -89,9 +82,9 @@ void LaunchLocalRefineAndClassify(const core::PassParams* device_params,
 }
 
 size_t MaxKernelLocalBytes() {
-  return std::max({LocalBytes(InitializeKernel), LocalBytes(ScoreKernel),
-                   LocalBytes(CheckerboardKernel), LocalBytes(LocalRefineKernel),
-                   LocalBytes(LocalRefineAndClassifyKernel)});
+  return std::max({KernelLocalBytes(InitializeKernel), KernelLocalBytes(ScoreKernel),
+                   KernelLocalBytes(CheckerboardKernel), KernelLocalBytes(LocalRefineKernel),
+                   KernelLocalBytes(LocalRefineAndClassifyKernel)});
 }
 
 }  // namespace cuda

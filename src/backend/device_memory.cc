@@ -28,6 +28,7 @@ DeviceMemoryEstimate EstimateDeviceMemory(const ImageSize& ref,
     if (geometric) e.source_depths += sources[j].Pixels() * sizeof(float);
   }
   e.state = ref.Pixels() * kDeviceStateBytesPerPixel;
+  e.deformable = ref.Pixels() * kDeviceDeformableBytesPerPixel;
   e.params = sizeof(core::PassParams);
   return e;
 }

@@ -19,6 +19,14 @@ namespace msp {
 // reliability classes (1 byte).
 constexpr size_t kDeviceStateBytesPerPixel = 4 + 12 + 4 + 4 + 1;
 
+// Bytes per reference pixel of the deformable step's whole-image maps on the
+// device: the iteration's snapshot of the planes (depth, normal), the
+// nearest reliable pixel and the anchor slot (int each), the confining
+// edges (1 byte) and their nearest pixel (int). The anchors of the
+// unreliable pixels are not counted: they go to the device in row bands
+// that fit what is left (backend/row_bands.h).
+constexpr size_t kDeviceDeformableBytesPerPixel = 4 + 12 + 4 + 4 + 1 + 4;
+
 struct ImageSize {
   int width = 0;
   int height = 0;
@@ -29,8 +37,9 @@ struct DeviceMemoryEstimate {
   size_t images = 0;         // grey reference and source images (float)
   size_t source_depths = 0;  // previous-pass depth of every source (geometric passes)
   size_t state = 0;          // the reference image's per-pixel state
+  size_t deformable = 0;     // the deformable step's whole-image maps
   size_t params = 0;         // the pass parameters
-  size_t Total() const { return images + source_depths + state + params; }
+  size_t Total() const { return images + source_depths + state + deformable + params; }
 };
 
 // The estimate for a reference image of size `ref` matched against `sources`.

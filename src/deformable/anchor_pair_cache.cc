@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <new>
 
+#include "core/deformable/deformable_sweep_pixel.h"
+
 namespace msp {
 namespace {
 
@@ -83,6 +85,7 @@ void CachedAnchorSums::operator()(const core::AnchorWindows& w, const core::Prep
   const core::PassParams& p = params_;
   const core::NccParams anchor_ncc = core::AnchorNccParams(p.ncc, d_);
   const int n = w.count;
+  constexpr int kViews = core::kMaxSourceViews;  // the stride of pair[k][a]
   // The costs of every pair this update needs: pair[k][a][j].
   float pair[core::kMaxAnchors][core::kMaxAnchors][core::kMaxSourceViews];
   core::PlaneWarp warp[core::kMaxAnchors];
@@ -102,8 +105,7 @@ void CachedAnchorSums::operator()(const core::AnchorWindows& w, const core::Prep
   for (int k = 0; k < n; ++k) {
     if (need[k] == 0u) continue;
     // Anchor k's plane as its own pixel sees it: the same for every pixel.
-    const core::PreparedPlane own =
-        core::PreparePlane(p, w.col[k], w.row[k], planes_.Get(PixelOf(p, w.col[k], w.row[k])));
+    const core::PreparedPlane own = core::AnchorOwnPlane(p, planes_, w, k);
     if (!own.valid) {
       // Behind the camera at the anchor, in front at the pixel: only float
       // rounding of a plane through the camera centre gets here. Scored on
@@ -145,10 +147,7 @@ void CachedAnchorSums::operator()(const core::AnchorWindows& w, const core::Prep
   for (int k = 0; k < n; ++k) {
     if (!cached[k]) continue;
     for (int j = 0; j < p.num_src; ++j) {
-      if (!((need[k] >> j) & 1u)) continue;
-      float total = 0.0f;
-      for (int a = 0; a < n; ++a) total += pair[k][a][j];
-      out->sum[k][j] = total;
+      if ((need[k] >> j) & 1u) out->sum[k][j] = core::SumPairCosts(&pair[k][0][j], n, kViews);
     }
   }
 }

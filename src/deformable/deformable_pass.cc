@@ -20,8 +20,11 @@ core::ReliabilityParams ReliabilityAfter(int finished_pass, const MspStereoOptio
   return reliability;
 }
 
-DeformablePass::DeformablePass(const MspStereoOptions& msp, int num_threads)
-    : msp_(msp), num_threads_(num_threads) {}
+DeformablePass::DeformablePass(const MspStereoOptions& msp, int num_threads, SweepEngine* engine)
+    : msp_(msp),
+      num_threads_(num_threads),
+      own_engine_(engine == nullptr ? std::make_unique<CpuSweepEngine>(num_threads) : nullptr),
+      engine_(engine == nullptr ? own_engine_.get() : engine) {}
 
 DeformableStepReport DeformablePass::Run(const Pass& pass, const core::PassParams& params,
                                          PixelState* state) {
@@ -50,9 +53,8 @@ DeformableStepReport DeformablePass::Run(const Pass& pass, const core::PassParam
       msp_.sampling_solutions, msp_.disparity_samples, static_cast<float>(msp_.disparity_step),
       static_cast<float>(msp_.variance_weight), msp_.profile_cost_term};
   ConfineAnchors(state->edges, maps, &settings);
-  report.sweeps =
-      RunDeformableCheckerboardIterations(params, maps, settings, pass.iterations, num_threads_,
-                                          &buffers_, pass.prior ? &prior_anchors_ : nullptr);
+  report.sweeps = engine_->DeformableIterations(params, maps, settings, pass.iterations,
+                                                pass.prior ? &prior_anchors_ : nullptr);
   return report;
 }
 
@@ -60,14 +62,14 @@ DeformableStepReport DeformablePass::Run(const Pass& pass, const core::PassParam
 // local refinement left in `state`, or (at a round start) the state
 // classified here.
 ReliabilityMaps DeformablePass::StartReliability(const Pass& pass, const core::PassParams& params,
-                                                 PixelState* state) const {
+                                                 PixelState* state) {
   std::vector<uint8_t> classes = std::move(state->classes);
   state->classes.clear();
   if ((pass.classify_after < 0) == classes.empty()) {
     throw std::logic_error("pass schedule and reliability classes of the state disagree");
   }
   if (pass.classify_after >= 0) {
-    return ClassifyState(params, ReliabilityAfter(pass.classify_after, msp_), num_threads_);
+    classes = engine_->Classify(params, ReliabilityAfter(pass.classify_after, msp_));
   }
   return MakeReliabilityMaps(std::move(classes), params.state.width, params.state.height,
                              num_threads_);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/deformable/reliability.h"
@@ -17,6 +18,7 @@
 #include "options/stereo_options.h"
 #include "patch_match/pass_schedule.h"
 #include "patch_match/pixel_state.h"
+#include "patch_match/sweep_engine.h"
 
 namespace msp {
 
@@ -34,12 +36,15 @@ struct DeformableStepReport {
   DeformableStats sweeps;
 };
 
-// The step of every deformable pass of a run, with the working memory it
-// keeps from one pass to the next.
+// The step of every deformable pass of a run: the whole-image parts here,
+// the per-pixel parts on the back-end's SweepEngine, which keeps their
+// working memory from one pass to the next.
 class DeformablePass {
  public:
-  // `num_threads` is the resolved worker count (>= 1).
-  DeformablePass(const MspStereoOptions& msp, int num_threads);
+  // `num_threads` is the resolved worker count (>= 1). The per-pixel steps
+  // (classification, anchor searches, sweeps) run on `engine`, which must
+  // outlive this; without one, on a CPU engine of its own.
+  DeformablePass(const MspStereoOptions& msp, int num_threads, SweepEngine* engine = nullptr);
 
   // The deformable step of `pass` on the state `params` views, which is
   // `state`'s. Takes the classes the previous pass's refinement left in
@@ -55,15 +60,16 @@ class DeformablePass {
 
  private:
   ReliabilityMaps StartReliability(const Pass& pass, const core::PassParams& params,
-                                   PixelState* state) const;
+                                   PixelState* state);
   void ConfineAnchors(const std::vector<uint8_t>& edges, const ReliabilityMaps& maps,
                       DeformableSettings* settings);
 
   MspStereoOptions msp_;
   int num_threads_;
-  std::vector<uint8_t> confining_;  // the confining bit of the current image, as 0/1
-  std::vector<int> nearest_edge_;   // scratch: its nearest confining pixel of every pixel
-  DeformableBuffers buffers_;       // scratch of the deformable iterations
+  std::vector<uint8_t> confining_;           // the confining bit of the current image, as 0/1
+  std::vector<int> nearest_edge_;            // scratch: its nearest confining pixel of every pixel
+  std::unique_ptr<SweepEngine> own_engine_;  // when no engine was given
+  SweepEngine* engine_;
   std::vector<core::PriorAnchors> prior_anchors_;
 };
 

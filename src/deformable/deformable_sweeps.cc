@@ -8,6 +8,7 @@
 
 #include "base/parallel_for.h"
 #include "base/seconds_since.h"
+#include "core/deformable/deformable_sweep_pixel.h"
 #include "core/deformable/deformable_update.h"
 #include "core/deformable/refine_and_classify.h"
 #include "deformable/anchor_pair_cache.h"
@@ -15,10 +16,6 @@
 
 namespace msp {
 namespace {
-
-// Anchor RANSAC draws get their own streams: the seed is salted so they never
-// coincide with the propagation / refinement streams of the same pixel.
-constexpr uint32_t kAnchorSeedSalt = 0xA5C1D3E7u;
 
 static_assert(core::kMaxAnchors <= core::kMaxPriorAnchors,
               "every anchor of a pixel fits the prior's anchor subsets");
@@ -57,13 +54,16 @@ std::vector<uint8_t> PixelClasses(const core::PassParams& params, int num_thread
 
 }  // namespace
 
+std::vector<uint8_t> ClassifyPixels(const core::PassParams& params,
+                                    const core::ReliabilityParams& rp, int num_threads) {
+  return PixelClasses(params, num_threads,
+                      [&](int col, int row) { return core::ClassifyPixel(params, col, row, rp); });
+}
+
 ReliabilityMaps ClassifyState(const core::PassParams& params, const core::ReliabilityParams& rp,
                               int num_threads) {
-  std::vector<uint8_t> classes = PixelClasses(params, num_threads, [&](int col, int row) {
-    return core::ClassifyPixel(params, col, row, rp);
-  });
-  return MakeReliabilityMaps(std::move(classes), params.state.width, params.state.height,
-                             num_threads);
+  return MakeReliabilityMaps(ClassifyPixels(params, rp, num_threads), params.state.width,
+                             params.state.height, num_threads);
 }
 
 std::vector<uint8_t> LocalRefineAndClassifyState(const core::PassParams& params,
@@ -91,6 +91,38 @@ ReliabilityMaps MakeReliabilityMaps(std::vector<uint8_t> classes, int width, int
   return maps;
 }
 
+int AssignAnchorSlots(const std::vector<uint8_t>& classes, std::vector<int>* slot) {
+  slot->assign(classes.size(), -1);
+  int num_slots = 0;
+  for (size_t i = 0; i < classes.size(); ++i) {
+    if (classes[i] == core::kUnreliable) (*slot)[i] = num_slots++;
+  }
+  return num_slots;
+}
+
+void CollectPriorAnchors(const core::Camera& cam, const std::vector<int>& slot,
+                         const std::vector<core::AnchorSet>& anchors, const float* depth, int width,
+                         int height, int num_threads, std::vector<int>* row_start,
+                         std::vector<core::PriorAnchors>* out) {
+  auto anchored = [&](int i) { return slot[i] >= 0 && anchors[slot[i]].count > 0; };
+  row_start->assign(height + 1, 0);
+  ParallelFor(0, height, num_threads, [&](int row) {
+    int count = 0;
+    for (int col = 0; col < width; ++col) count += anchored(row * width + col);
+    (*row_start)[row + 1] = count;
+  });
+  for (int row = 0; row < height; ++row) (*row_start)[row + 1] += (*row_start)[row];
+  out->resize((*row_start)[height]);
+  ParallelFor(0, height, num_threads, [&](int row) {
+    int entry = (*row_start)[row];
+    for (int col = 0; col < width; ++col) {
+      const int i = row * width + col;
+      if (anchored(i))
+        (*out)[entry++] = ToPriorAnchors(cam, anchors[slot[i]], depth, width, col, row);
+    }
+  });
+}
+
 DeformableStats RunDeformableCheckerboardIterations(
     const core::PassParams& params, const ReliabilityMaps& maps, const DeformableSettings& settings,
     int num_iterations, int num_threads, DeformableBuffers* buffers,
@@ -100,11 +132,7 @@ DeformableStats RunDeformableCheckerboardIterations(
   const size_t n = static_cast<size_t>(width) * height;
   // Slots of the unreliable pixels in the anchor array.
   std::vector<int>& slot = buffers->slot;
-  slot.assign(n, -1);
-  int num_slots = 0;
-  for (size_t i = 0; i < n; ++i) {
-    if (maps.classes[i] == core::kUnreliable) slot[i] = num_slots++;
-  }
+  const int num_slots = AssignAnchorSlots(maps.classes, &slot);
   std::vector<core::AnchorSet>& anchors = buffers->anchors;
   std::vector<core::AnchorHits>& hits = buffers->hits;
   anchors.resize(num_slots);
@@ -123,10 +151,6 @@ DeformableStats RunDeformableCheckerboardIterations(
     buffers->caches = std::make_unique<AnchorPairCachePool>(params.num_src);
   }
   AnchorPairCachePool& caches = *buffers->caches;
-  // The anchored pixels of each row in the first iteration, then the first
-  // entry of each row among them: the prior's anchors are filled in parallel.
-  std::vector<int>& row_start = buffers->row_start;
-  row_start.assign(height + 1, 0);
   DeformableStats stats;
   for (int iteration = 0; iteration < num_iterations; ++iteration) {
     caches.ClearAll();
@@ -137,39 +161,19 @@ DeformableStats RunDeformableCheckerboardIterations(
     ParallelFor(0, height, num_threads, [&](int row) {
       int count = 0;
       for (int col = 0; col < width; ++col) {
-        const int i = row * width + col;
-        if (slot[i] < 0) continue;
-        core::Rng rng =
-            core::MakeRng(core::RngKey(params.seed ^ kAnchorSeedSalt, params.image_id,
-                                       params.pass_id, iteration, static_cast<uint32_t>(i)));
-        core::AnchorHits& cast = hits[slot[i]];
-        if (iteration == 0 && settings.synergistic) {
-          solutions[slot[i]] = core::InitialSamplingSolution(params, static_cast<uint32_t>(i));
-        }
-        if (iteration == 0 || !core::HitsStillValid(anchor_maps, cast)) {
-          core::CastAnchorHits(anchor_maps, col, row, settings.anchors, &cast);
-        }
-        core::FitAnchors(params.ref_camera, anchor_maps, col, row, settings.anchors, cast, &rng,
-                         &anchors[slot[i]]);
-        count += anchors[slot[i]].count > 0;
+        const int k = slot[row * width + col];
+        if (k < 0) continue;
+        count += core::FindPixelAnchors(params, anchor_maps, settings.anchors, col, row, iteration,
+                                        &hits[k], &anchors[k],
+                                        settings.synergistic ? &solutions[k] : nullptr);
       }
       anchored += count;
-      if (iteration == 0) row_start[row + 1] = count;
     });
     stats.anchored_updates += anchored;
     stats.anchor_seconds += SecondsSince(anchors_start);
     if (iteration == 0 && prior_anchors != nullptr) {
-      for (int row = 0; row < height; ++row) row_start[row + 1] += row_start[row];
-      prior_anchors->resize(row_start[height]);
-      ParallelFor(0, height, num_threads, [&](int row) {
-        int entry = row_start[row];
-        for (int col = 0; col < width; ++col) {
-          const int i = row * width + col;
-          if (slot[i] < 0 || anchors[slot[i]].count == 0) continue;
-          (*prior_anchors)[entry++] =
-              ToPriorAnchors(params.ref_camera, anchors[slot[i]], depth.data(), width, col, row);
-        }
-      });
+      CollectPriorAnchors(params.ref_camera, slot, anchors, depth.data(), width, height,
+                          num_threads, &buffers->row_start, prior_anchors);
     }
     const auto sweep_start = std::chrono::steady_clock::now();
     for (int color = 0; color < 2; ++color) {
@@ -185,19 +189,14 @@ DeformableStats RunDeformableCheckerboardIterations(
           for (int row = task * kRowsPerTask; row < end; ++row) {
             for (int col = (row + color) & 1; col < width; col += 2) {
               const int k = slot[row * width + col];
-              if (k >= 0 && anchors[k].count > 0) {
-                sampling.solution = settings.synergistic ? &solutions[k] : nullptr;
-                core::DeformableUpdatePixel(params, col, row, iteration, anchors[k], planes,
-                                            settings.cost, anchor_sums, sampling);
-              } else {
-                core::UpdatePixel(params, col, row, iteration);
-              }
+              sampling.solution = k >= 0 && settings.synergistic ? &solutions[k] : nullptr;
+              core::DeformableSweepPixel(params, col, row, iteration,
+                                         k >= 0 ? &anchors[k] : nullptr, planes, settings.cost,
+                                         anchor_sums, sampling);
             }
           }
         };
-        // A cluster's lane, or a lane of sampled pixels, is no anchor's
-        // fixed window: the shared pairs, keyed by anchor, do not apply.
-        if (settings.cost.disassemble_clustering || settings.synergistic) {
+        if (!core::SharesAnchorPairs(settings.cost, settings.synergistic)) {
           rows(core::DirectAnchorSums{params, settings.cost});
           return;
         }

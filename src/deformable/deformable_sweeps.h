@@ -28,6 +28,11 @@ struct ReliabilityMaps {
   int num_unreliable = 0;
 };
 
+// The class of every pixel of params.state (core::ClassifyPixel), rows in
+// parallel: the CPU back-end's part of ClassifyState.
+std::vector<uint8_t> ClassifyPixels(const core::PassParams& params,
+                                    const core::ReliabilityParams& rp, int num_threads);
+
 // Classifies every pixel of params.state under the photometric cost (the
 // thresholds are NCC costs, so the geometric term is left out) and builds the
 // nearest-reliable map.
@@ -80,9 +85,22 @@ struct DeformableBuffers {
   std::vector<core::AnchorHits> hits;
   std::vector<uint32_t> solutions;   // each anchored pixel's sampling solution
   std::vector<float> depth, normal;  // the iteration's snapshot of the planes
-  std::vector<int> row_start;        // first entry of each row in the prior's anchors
+  std::vector<int> row_start;        // scratch of CollectPriorAnchors
   std::unique_ptr<AnchorPairCachePool> caches;
 };
+
+// The anchor slot of every pixel into *slot: unreliable pixels are numbered
+// in pixel order (so the slots of a band of rows are consecutive), the
+// others get -1. Returns the number of slots.
+int AssignAnchorSlots(const std::vector<uint8_t>& classes, std::vector<int>* slot);
+
+// The segmentation prior's anchors (core::PriorAnchors) of every slotted
+// pixel with anchors, in pixel order, their points back-projected on
+// `depth` (the snapshot the anchors were fitted on). `row_start` is scratch.
+void CollectPriorAnchors(const core::Camera& cam, const std::vector<int>& slot,
+                         const std::vector<core::AnchorSet>& anchors, const float* depth, int width,
+                         int height, int num_threads, std::vector<int>* row_start,
+                         std::vector<core::PriorAnchors>* out);
 
 // `num_iterations` red-black iterations. Before each, the anchors of every
 // unreliable pixel are fitted on a snapshot of the planes (the rays are cast

@@ -95,7 +95,7 @@ class CpuRunner {
         engine_(engine),
         threads_(ResolveNumThreads(msp.num_threads)),
         cache_(static_cast<size_t>(pm.cache_size * kBytesPerGigabyte), scratch_dir),
-        deformable_(msp, threads_),
+        deformable_(msp, threads_, &engine),
         segmenter_(SegmenterFromName(msp.segmenter)) {
     if (SegmentationPriorEnabled(msp)) prior_.reset(new PriorDriver(views, msp, threads_));
     if (shared != nullptr) shared_.reset(new SharedPasses(*shared, views, problems));

@@ -24,4 +24,16 @@ std::vector<uint8_t> CpuSweepEngine::LocalRefineAndClassify(const core::PassPara
   return LocalRefineAndClassifyState(params, rp, num_threads_);
 }
 
+std::vector<uint8_t> CpuSweepEngine::Classify(const core::PassParams& params,
+                                              const core::ReliabilityParams& rp) {
+  return ClassifyPixels(params, rp, num_threads_);
+}
+
+DeformableStats CpuSweepEngine::DeformableIterations(
+    const core::PassParams& params, const ReliabilityMaps& maps, const DeformableSettings& settings,
+    int num_iterations, std::vector<core::PriorAnchors>* prior_anchors) {
+  return RunDeformableCheckerboardIterations(params, maps, settings, num_iterations, num_threads_,
+                                             &deformable_buffers_, prior_anchors);
+}
+
 }  // namespace msp

@@ -10,6 +10,8 @@
 
 #include "core/deformable/reliability.h"
 #include "core/patch_match/patch_match_kernel.h"
+#include "core/prior/best_layer.h"
+#include "deformable/deformable_sweeps.h"
 
 namespace msp {
 
@@ -30,6 +32,16 @@ class SweepEngine {
   // (LocalRefineAndClassifyState); returns the classes.
   virtual std::vector<uint8_t> LocalRefineAndClassify(const core::PassParams& params,
                                                       const core::ReliabilityParams& rp) = 0;
+  // The reliability class of every pixel (ClassifyPixels).
+  virtual std::vector<uint8_t> Classify(const core::PassParams& params,
+                                        const core::ReliabilityParams& rp) = 0;
+  // The deformable red-black iterations with their anchor searches
+  // (RunDeformableCheckerboardIterations, whose contract this is).
+  virtual DeformableStats DeformableIterations(const core::PassParams& params,
+                                               const ReliabilityMaps& maps,
+                                               const DeformableSettings& settings,
+                                               int num_iterations,
+                                               std::vector<core::PriorAnchors>* prior_anchors) = 0;
   // Called once after the last pass: figures for the log (e.g. device memory).
   virtual void Finish() {}
 };
@@ -45,9 +57,15 @@ class CpuSweepEngine : public SweepEngine {
   void LocalRefine(const core::PassParams& params) override;
   std::vector<uint8_t> LocalRefineAndClassify(const core::PassParams& params,
                                               const core::ReliabilityParams& rp) override;
+  std::vector<uint8_t> Classify(const core::PassParams& params,
+                                const core::ReliabilityParams& rp) override;
+  DeformableStats DeformableIterations(const core::PassParams& params, const ReliabilityMaps& maps,
+                                       const DeformableSettings& settings, int num_iterations,
+                                       std::vector<core::PriorAnchors>* prior_anchors) override;
 
  private:
   int num_threads_;
+  DeformableBuffers deformable_buffers_;  // kept from one deformable pass to the next
 };
 
 }  // namespace msp

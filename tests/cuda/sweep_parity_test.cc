@@ -10,7 +10,8 @@
 // per-pixel steps that take no decision on a cost (scoring) agree to
 // kCostTolerance; steps that keep the better of two costs may flip where two
 // candidates cost nearly the same, so their planes agree at all but
-// kMaxFlippedShare of the pixels (depth within kDepthTolerance relative).
+// kMaxFlippedShare of the pixels (depth within kParityDepthTolerance relative;
+// both in parity_checks.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,14 +21,13 @@
 #include "cuda/cuda_sweep_engine.h"
 #include "patch_match/sweep_engine.h"
 #include "tests/cuda/gpu_skip.h"
+#include "tests/cuda/parity_checks.h"
 #include "tests/support/plane_scene.h"
 
 namespace msp {
 namespace {
 
 constexpr float kCostTolerance = 1e-4f;
-constexpr float kDepthTolerance = 1e-3f;
-constexpr double kMaxFlippedShare = 0.01;
 constexpr float kPlaneDepth = 2.0f;
 
 // A copy of a scene's state with params pointing at it.
@@ -55,16 +55,6 @@ void MakePassScene(test::PlaneScene* s) {
   s->params.seed = 7;
   s->params.image_id = 3;
   s->params.pass_id = 1;
-}
-
-// Share of pixels whose depth or mask differ beyond the tolerance.
-double FlippedShare(const StateCopy& a, const StateCopy& b) {
-  int flipped = 0;
-  for (size_t i = 0; i < a.depth.size(); ++i) {
-    const bool same_depth = std::fabs(a.depth[i] - b.depth[i]) <= kDepthTolerance * a.depth[i];
-    if (!same_depth || a.mask[i] != b.mask[i]) ++flipped;
-  }
-  return static_cast<double>(flipped) / a.depth.size();
 }
 
 void ExpectSameCosts(const StateCopy& cpu, const StateCopy& gpu) {
@@ -118,7 +108,7 @@ TEST(SweepParity, CheckerboardIterationsConvergeAlike) {
   StateCopy cpu(start.params), gpu(start.params);
   CpuSweepEngine(1).Checkerboard(cpu.params, 3);
   GpuEngine().Checkerboard(gpu.params, 3);
-  EXPECT_LE(FlippedShare(cpu, gpu), kMaxFlippedShare);
+  EXPECT_LE(test::FlippedShare(cpu, gpu), test::kMaxFlippedShare);
 }
 
 TEST(SweepParity, LocalRefineKeepsTheSameDepths) {
@@ -130,7 +120,7 @@ TEST(SweepParity, LocalRefineKeepsTheSameDepths) {
   StateCopy cpu(s.params), gpu(s.params);
   CpuSweepEngine(1).LocalRefine(cpu.params);
   GpuEngine().LocalRefine(gpu.params);
-  EXPECT_LE(FlippedShare(cpu, gpu), kMaxFlippedShare);
+  EXPECT_LE(test::FlippedShare(cpu, gpu), test::kMaxFlippedShare);
 }
 
 TEST(SweepParity, LocalRefineAndClassifyGivesTheSameClasses) {
@@ -142,10 +132,8 @@ TEST(SweepParity, LocalRefineAndClassifyGivesTheSameClasses) {
   const std::vector<uint8_t> cpu_classes = CpuSweepEngine(1).LocalRefineAndClassify(cpu.params, rp);
   const std::vector<uint8_t> gpu_classes = GpuEngine().LocalRefineAndClassify(gpu.params, rp);
   ASSERT_EQ(cpu_classes.size(), gpu_classes.size());
-  int differ = 0;
-  for (size_t i = 0; i < cpu_classes.size(); ++i) differ += cpu_classes[i] != gpu_classes[i];
-  EXPECT_LE(static_cast<double>(differ) / cpu_classes.size(), kMaxFlippedShare);
-  EXPECT_LE(FlippedShare(cpu, gpu), kMaxFlippedShare);
+  EXPECT_LE(test::DifferingShare(cpu_classes, gpu_classes), test::kMaxFlippedShare);
+  EXPECT_LE(test::FlippedShare(cpu, gpu), test::kMaxFlippedShare);
 }
 
 }  // namespace

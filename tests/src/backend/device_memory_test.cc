@@ -22,6 +22,7 @@ TEST(DeviceMemory, EstimateCountsEveryBufferOfTheKernels) {
   EXPECT_EQ(photometric.images, 5 * pixels * sizeof(float));
   EXPECT_EQ(photometric.source_depths, 0u);
   EXPECT_EQ(photometric.state, pixels * (4 + 12 + 4 + 4 + 1));
+  EXPECT_EQ(photometric.deformable, pixels * (4 + 12 + 4 + 4 + 1 + 4));
   EXPECT_EQ(photometric.params, sizeof(core::PassParams));
   const DeviceMemoryEstimate geometric = EstimateDeviceMemory(ref, sources, true);
   EXPECT_EQ(geometric.source_depths, 4 * pixels * sizeof(float));

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "core/deformable/deformable_sweep_pixel.h"
 #include "tests/support/plane_scene.h"
 
 namespace msp {
@@ -120,6 +121,42 @@ TEST(CachedAnchorSums, SameSumsWhateverTheCacheHolds) {
   // The sums are real: the anchors match their planes (near the truth) far
   // better than the worst cost of 2 per anchor.
   EXPECT_LT(first.sum[0][0], 0.5f * kMaxAnchors * core::kMaxCost);
+}
+
+// The CUDA back-end's provider, which scores every pair on the spot under
+// its anchor's own plane, gives the cache's sums to the bit, whether the
+// cache computed its pairs now or reads them back, and a deformable update
+// through each ends alike: the two back-ends' updates take the same sums.
+TEST(OwnPlaneAnchorSums, TheCachesSumsToTheBit) {
+  Fixture f;
+  const int col = 100, row = 75;
+  const core::AnchorSet anchors = f.Ring(col, row, 20);
+  const core::OwnPlaneAnchorSums own{f.s.params, f.planes, f.d};
+  const core::CandidateAnchorSums expected = f.Sums(col, row, anchors, own);
+  AnchorPairCache cache(f.s.params.num_src);
+  const CachedAnchorSums cached(f.s.params, f.planes, f.d, &cache);
+  const core::CandidateAnchorSums from_cold = f.Sums(col, row, anchors, cached);
+  const core::CandidateAnchorSums from_warm = f.Sums(col, row, anchors, cached);  // read back
+  for (int k = 0; k < kMaxAnchors; ++k) {
+    EXPECT_EQ(from_cold.sum[k][0], expected.sum[k][0]) << k;
+    EXPECT_EQ(from_warm.sum[k][0], expected.sum[k][0]) << k;
+  }
+  EXPECT_LT(expected.sum[0][0], 0.5f * kMaxAnchors * core::kMaxCost);
+
+  test::PlaneScene& s = f.s;
+  const int i = row * s.ref.width + col;
+  s.state_depth[i] = 3.6f;
+  s.state_cost[i] = core::kMaxCost;
+  const std::vector<float> start_depth = s.state_depth, start_normal = s.state_normal;
+  core::DeformableUpdatePixel(s.params, col, row, 0, anchors, f.planes, f.d, own);
+  const float own_depth = s.state_depth[i], own_cost = s.state_cost[i];
+  s.state_depth = start_depth;
+  s.state_normal = start_normal;
+  s.state_cost[i] = core::kMaxCost;
+  cache.Clear();
+  core::DeformableUpdatePixel(s.params, col, row, 0, anchors, f.planes, f.d, cached);
+  EXPECT_EQ(s.state_depth[i], own_depth);
+  EXPECT_EQ(s.state_cost[i], own_cost);
 }
 
 // A deformable update gives the same plane and cost with the cache as with

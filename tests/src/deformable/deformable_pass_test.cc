@@ -8,73 +8,24 @@
 
 #include "patch_match/sweeps.h"
 #include "prior/prior_driver.h"
-#include "tests/support/synthetic_views.h"
+#include "tests/support/block_scene.h"
 
 namespace msp {
 namespace {
 
-constexpr int kWidth = 64, kHeight = 48, kNumViews = 3;
-constexpr float kPlaneDepth = 2.0f, kBaseline = 0.25f;
-constexpr int kNumThreads = 2;
-// The unreliable block of the constructed classes: reliable pixels all round,
-// so every sector of its pixels' anchor search finds some.
-constexpr int kBlockCol0 = 24, kBlockCol1 = 39, kBlockRow0 = 16, kBlockRow1 = 31;
-
-bool InBlock(int col, int row) {
-  return col >= kBlockCol0 && col <= kBlockCol1 && row >= kBlockRow0 && row <= kBlockRow1;
-}
-
-// Views of a textured fronto-parallel plane and the reference's pixel state,
-// with the PassParams of a photometric pass over it.
-struct Scene {
-  std::vector<View> views =
-      test::RenderFrontoParallelPlane(kWidth, kHeight, kNumViews, kPlaneDepth, kBaseline);
-  PixelState state{kWidth, kHeight};
-  core::PassParams params{};
-
-  Scene() { params = test::PhotometricPassParams(views, &state); }
-
-  Scene(const Scene&) = delete;
-  Scene& operator=(const Scene&) = delete;
-
-  // The true plane at every pixel, every source view selected, scored.
-  void SetTruePlanes() {
-    const size_t n = state.depth.size();
-    for (size_t i = 0; i < n; ++i) {
-      state.depth[i] = kPlaneDepth;
-      state.normal[i] = state.normal[n + i] = 0.0f;
-      state.normal[2 * n + i] = -1.0f;
-      state.mask[i] = (1u << params.num_src) - 1u;
-    }
-    ScoreState(params, kNumThreads);
-  }
-};
-
-// The classes a previous pass's refinement would leave: the block
-// unreliable, every other pixel reliable.
-std::vector<uint8_t> BlockClasses() {
-  std::vector<uint8_t> classes(kWidth * kHeight);
-  for (int row = 0; row < kHeight; ++row) {
-    for (int col = 0; col < kWidth; ++col) {
-      classes[row * kWidth + col] = InBlock(col, row) ? core::kUnreliable : core::kReliable;
-    }
-  }
-  return classes;
-}
-
-constexpr int kBlockPixels = (kBlockCol1 - kBlockCol0 + 1) * (kBlockRow1 - kBlockRow0 + 1);
-
-// A deformable pass of the first round that starts with the previous pass's classes.
-Pass DeformablePassWithClasses() {
-  Pass pass;
-  pass.kind = PassKind::kGeometric;
-  pass.index = 1;
-  pass.start = PassStart::kPrevious;
-  pass.sweeps = PassSweeps::kDeformable;
-  pass.iterations = 2;
-  pass.classify_after = -1;
-  return pass;
-}
+using test::BlockClasses;
+using test::DeformablePassWithClasses;
+using test::InBlock;
+using test::kBlockCol0;
+using test::kBlockCol1;
+using test::kBlockPixels;
+using test::kBlockRow0;
+using test::kBlockRow1;
+using test::kHeight;
+using test::kNumThreads;
+using test::kPlaneDepth;
+using test::kWidth;
+using Scene = test::BlockScene;
 
 // Packed prior edges with `bits` on the ring of pixels just outside the block.
 std::vector<uint8_t> RingAroundTheBlock(uint8_t bits) {
@@ -178,6 +129,43 @@ TEST(DeformablePass, ClassifiesTheStateAtARoundStart) {
   EXPECT_EQ(report.num_unreliable, expected.num_unreliable);
 }
 
+// The CPU engine, counting the per-pixel steps it is asked for.
+class CountingEngine : public CpuSweepEngine {
+ public:
+  CountingEngine() : CpuSweepEngine(kNumThreads) {}
+  std::vector<uint8_t> Classify(const core::PassParams& params,
+                                const core::ReliabilityParams& rp) override {
+    ++classified;
+    return CpuSweepEngine::Classify(params, rp);
+  }
+  DeformableStats DeformableIterations(const core::PassParams& params, const ReliabilityMaps& maps,
+                                       const DeformableSettings& settings, int num_iterations,
+                                       std::vector<core::PriorAnchors>* prior_anchors) override {
+    ++iterated;
+    return CpuSweepEngine::DeformableIterations(params, maps, settings, num_iterations,
+                                                prior_anchors);
+  }
+  int classified = 0;
+  int iterated = 0;
+};
+
+// The classification and the iterations run on the engine the step is given
+// (the CUDA back-end's in a CUDA run), with the result of the step's own.
+TEST(DeformablePass, RunsItsPerPixelStepsOnTheGivenEngine) {
+  Scene given, own;
+  InitializeState(given.params, kNumThreads);
+  InitializeState(own.params, kNumThreads);
+  Pass pass = DeformablePassWithClasses();
+  pass.classify_after = 0;
+  CountingEngine engine;
+  DeformablePass(MspStereoOptions(), kNumThreads, &engine).Run(pass, given.params, &given.state);
+  DeformablePass(MspStereoOptions(), kNumThreads).Run(pass, own.params, &own.state);
+  EXPECT_EQ(engine.classified, 1);
+  EXPECT_EQ(engine.iterated, 1);
+  EXPECT_EQ(given.state.depth, own.state.depth);
+  EXPECT_EQ(given.state.mask, own.state.mask);
+}
+
 TEST(DeformablePass, ScheduleAndStateMustAgree) {
   Scene s;
   s.SetTruePlanes();
@@ -234,20 +222,9 @@ TEST(DeformablePass, EquidistributionOffIsTheFixedSectorSearch) {
   EXPECT_EQ(off.state.normal, direct.state.normal);
   EXPECT_EQ(off.state.cost, direct.state.cost);
   EXPECT_EQ(off.state.mask, direct.state.mask);
-  const auto same_anchors = [](const std::vector<core::PriorAnchors>& a,
-                               const std::vector<core::PriorAnchors>& b) {
-    if (a.size() != b.size()) return false;
-    for (size_t i = 0; i < a.size(); ++i) {
-      if (a[i].col != b[i].col || a[i].row != b[i].row || a[i].count != b[i].count) return false;
-      for (int k = 0; k < a[i].count; ++k) {
-        if (a[i].cols[k] != b[i].cols[k] || a[i].rows[k] != b[i].rows[k]) return false;
-      }
-    }
-    return true;
-  };
   ASSERT_FALSE(direct_anchors.empty());
-  EXPECT_TRUE(same_anchors(off_step.prior_anchors(), direct_anchors));
-  EXPECT_FALSE(same_anchors(on_step.prior_anchors(), direct_anchors));
+  EXPECT_TRUE(test::SameAnchorPixels(off_step.prior_anchors(), direct_anchors));
+  EXPECT_FALSE(test::SameAnchorPixels(on_step.prior_anchors(), direct_anchors));
 }
 
 // A confining edge all round the block leaves its pixels no anchor; the same

@@ -18,9 +18,10 @@ namespace {
 // the image; above it generation stops being "a few seconds".
 constexpr int kMinImageSide = 64;
 constexpr int kMaxImageSide = 4096;
-// Fewer than 2 views cannot triangulate; the rig's arc is designed for ~10.
+// Fewer than 2 views cannot triangulate; the rig's arc is designed for ~10,
+// and up to 128 make the many-image workspaces of the memory test.
 constexpr int kMinCameras = 2;
-constexpr int kMaxCameras = 64;
+constexpr int kMaxCameras = 128;
 
 void CheckOptions(const GeneratorOptions& options) {
   const RigOptions& rig = options.rig;

@@ -24,19 +24,45 @@ void ReadVector(std::ifstream& in, std::vector<T>* v) {
   in.read(reinterpret_cast<char*>(v->data()), static_cast<std::streamsize>(v->size() * sizeof(T)));
 }
 
-// A per-pixel byte plane that may be empty (edges, classes): a flag, then the bytes.
-void WriteOptionalPlane(std::ofstream& out, const std::vector<uint8_t>& v) {
+// A per-pixel plane that may be empty (edges, classes, previous depth): a
+// flag, then the values.
+template <typename T>
+void WriteOptionalPlane(std::ofstream& out, const std::vector<T>& v) {
   const int present = v.empty() ? 0 : 1;
   out.write(reinterpret_cast<const char*>(&present), sizeof(present));
   WriteVector(out, v);
 }
 
-void ReadOptionalPlane(std::ifstream& in, size_t num_pixels, std::vector<uint8_t>* v) {
+template <typename T>
+void ReadOptionalPlane(std::ifstream& in, size_t num_pixels, std::vector<T>* v) {
   int present = 0;
   in.read(reinterpret_cast<char*>(&present), sizeof(present));
   if (!present) return;
   v->resize(num_pixels);
   ReadVector(in, v);
+}
+
+PixelState ReadSpillFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  int size[2] = {0, 0};
+  in.read(reinterpret_cast<char*>(size), sizeof(size));
+  PixelState state(size[0], size[1]);
+  ReadVector(in, &state.depth);
+  ReadVector(in, &state.normal);
+  ReadVector(in, &state.cost);
+  ReadVector(in, &state.mask);
+  ReadOptionalPlane(in, state.depth.size(), &state.edges);
+  ReadOptionalPlane(in, state.depth.size(), &state.classes);
+  ReadOptionalPlane(in, state.depth.size(), &state.previous_depth);
+  if (!in) throw std::runtime_error("cannot read spilled state " + path);
+  return state;
+}
+
+std::vector<float> DepthOf(const PixelState& state, bool previous) {
+  if (previous && state.previous_depth.empty()) {
+    throw std::logic_error("StateCache: no previous depth");
+  }
+  return previous ? state.previous_depth : state.depth;
 }
 
 }  // namespace
@@ -64,17 +90,7 @@ PixelState& StateCache::Get(int id) {
   if (it == resident_.end()) {
     auto sp = spilled_.find(id);
     if (sp == spilled_.end()) throw std::logic_error("StateCache: unknown image state");
-    std::ifstream in(sp->second, std::ios::binary);
-    int size[2] = {0, 0};
-    in.read(reinterpret_cast<char*>(size), sizeof(size));
-    PixelState state(size[0], size[1]);
-    ReadVector(in, &state.depth);
-    ReadVector(in, &state.normal);
-    ReadVector(in, &state.cost);
-    ReadVector(in, &state.mask);
-    ReadOptionalPlane(in, state.depth.size(), &state.edges);
-    ReadOptionalPlane(in, state.depth.size(), &state.classes);
-    if (!in) throw std::runtime_error("cannot read spilled state " + sp->second);
+    PixelState state = ReadSpillFile(sp->second);
     std::remove(sp->second.c_str());
     spilled_.erase(sp);
     resident_bytes_ += state.Bytes();
@@ -82,6 +98,15 @@ PixelState& StateCache::Get(int id) {
   }
   Touch(id);
   return it->second;
+}
+
+std::vector<float> StateCache::ReadDepth(int id, bool previous) const {
+  auto it = resident_.find(id);
+  if (it != resident_.end()) return DepthOf(it->second, previous);
+  auto sp = spilled_.find(id);
+  if (sp == spilled_.end()) throw std::logic_error("StateCache: unknown image state");
+  // Read, not taken back: the file stays, so nothing is written again.
+  return DepthOf(ReadSpillFile(sp->second), previous);
 }
 
 PixelState StateCache::Take(int id) {
@@ -123,6 +148,7 @@ void StateCache::Spill(int id) {
   WriteVector(out, it->second.mask);
   WriteOptionalPlane(out, it->second.edges);
   WriteOptionalPlane(out, it->second.classes);
+  WriteOptionalPlane(out, it->second.previous_depth);
   if (!out) throw std::runtime_error("cannot spill state to " + path + " (disk full?)");
   resident_bytes_ -= it->second.Bytes();
   resident_.erase(it);

@@ -196,6 +196,14 @@ void AssignDepthRanges(const PatchMatchStereoOptions& options, const Workspace& 
   }
 }
 
+// The sparse model's points and 2D observations have given the problems and
+// depth ranges; nothing reads them after, and they grow with the image count,
+// so their memory goes back before the images are read (README, "Memory").
+void DropObservations(SparseModel* model) {
+  for (SparseImage& image : model->images) std::vector<Point2D>().swap(image.points2D);
+  std::vector<SparsePoint3D>().swap(model->points3D);
+}
+
 // Cameras of every view at the working resolution; images of used views.
 // Every used image is read here, so that a bad one stops the run before it
 // starts, but only those within `image_budget_bytes` stay in memory; the
@@ -291,6 +299,7 @@ Workspace LoadWorkspace(const StereoCommandOptions& options) {
                       options.patch_match.min_triangulation_angle);
   problems = HandleMissingImages(std::move(problems), ws, options.patch_match.allow_missing_files);
   AssignDepthRanges(options.patch_match, ws, &problems);
+  DropObservations(&ws.model);
   LoadViews(problems, options.patch_match.max_image_size,
             SplitCacheSize(options.patch_match.cache_size).image_bytes, &ws);
   ws.problems = std::move(problems);

@@ -10,13 +10,15 @@
 MEMORY_WIDTH=96
 MEMORY_HEIGHT=72
 MEMORY_SOURCES=4
-# 4 MiB: states of a few images, images of a few, a round's layers of a few.
-MEMORY_CACHE_GB=0.00390625
+# 4 MiB unless set: states of a few images, images of a few, a round's
+# layers of a few.
+MEMORY_CACHE_GB=${MEMORY_CACHE_GB:-0.00390625}
 MEMORY_STEREO_OPTIONS="--MspStereo.num_threads 1 --MspStereo.coarsest_image_size $MEMORY_WIDTH --MspStereo.deformable false --PatchMatchStereo.cache_size $MEMORY_CACHE_GB --log_level 0"
 
-# The bound of README's "Memory": F + P x (B0 + B1 x S) + cache_size, F the
-# program's fixed part at one thread, P the pixels of the largest image at
-# the working resolution, S the sources of a problem.
+# The bound of README's "Memory": F + M + P x (B0 + B1 x S) + cache_size, F
+# the program's fixed part at one thread, M the sparse model while it is
+# read (the size of sparse/*.bin), P the pixels of the largest image at the
+# working resolution, S the sources of a problem.
 MEMORY_FIXED_MIB=112
 MEMORY_BYTES_PER_PIXEL=400
 MEMORY_BYTES_PER_PIXEL_AND_SOURCE=16
@@ -41,10 +43,15 @@ memory_peak_kib() {
   tail -1 "$ws.time" | cut -d' ' -f1
 }
 
-# memory_bound_kib: the bound in KiB for the workspaces above.
+# memory_model_kib WS: M of the bound for workspace WS, in KiB.
+memory_model_kib() {
+  du -k -c "$1"/sparse/*.bin | tail -1 | cut -f1
+}
+
+# memory_bound_kib WS: the bound in KiB for workspace WS (made as above).
 memory_bound_kib() {
   pixels=$((MEMORY_WIDTH * MEMORY_HEIGHT))
   per_pixel=$((MEMORY_BYTES_PER_PIXEL + MEMORY_BYTES_PER_PIXEL_AND_SOURCE * MEMORY_SOURCES))
   cache_kib=$(awk "BEGIN { printf \"%d\", $MEMORY_CACHE_GB * 1024 * 1024 }")
-  echo $((MEMORY_FIXED_MIB * 1024 + pixels * per_pixel / 1024 + cache_kib))
+  echo $((MEMORY_FIXED_MIB * 1024 + $(memory_model_kib "$1") + pixels * per_pixel / 1024 + cache_kib))
 }

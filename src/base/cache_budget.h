@@ -9,9 +9,9 @@
 namespace msp {
 
 struct CacheBudget {
-  size_t state_bytes = 0;   // per-image PatchMatch state (StateCache)
-  size_t image_bytes = 0;   // working-resolution images kept from the start
-  size_t layer_bytes = 0;   // the segmentation prior's label layers of a round
+  size_t state_bytes = 0;  // per-image PatchMatch state (StateCache)
+  size_t image_bytes = 0;  // working-resolution images kept from the start
+  size_t layer_bytes = 0;  // the segmentation prior's label layers of a round
 };
 
 inline CacheBudget SplitCacheSize(double cache_size_gigabytes) {

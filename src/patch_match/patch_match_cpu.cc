@@ -88,7 +88,8 @@ class CpuRunner {
         deformable_(msp, threads_),
         segmenter_(SegmenterFromName(msp.segmenter)) {
     if (SegmentationPriorEnabled(msp)) {
-      prior_.reset(new PriorDriver(views, msp, threads_, SplitCacheSize(pm.cache_size).layer_bytes));
+      prior_.reset(
+          new PriorDriver(views, msp, threads_, SplitCacheSize(pm.cache_size).layer_bytes));
     }
   }
 
@@ -232,9 +233,11 @@ class CpuRunner {
   // reference for the prior and segment planes), and for the first pass of a
   // round the reference's at the coarser level the planes come up from.
   void BuildLevels(const Pass& pass, const Problem& problem) {
+    // The previous problem's go first: one problem's images at a time.
+    level_.reset();
+    coarser_.reset();
     const int color_view = prior_ != nullptr || msp_.segment_planes ? problem.ref : -1;
     level_.reset(new Level(BuildLevel(views_, ViewsOf(problem), color_view, pass.halvings)));
-    coarser_.reset();
     if (pass.start == PassStart::kUpsampled) {
       coarser_.reset(new Level(BuildLevel(views_, {problem.ref}, -1, pass.halvings + 1)));
     }

@@ -41,7 +41,8 @@ Level BuildLevel(const std::vector<View>& views, const std::vector<int>& ids, in
                                   ": the segmentation prior and segment planes need its RGB image");
     }
     level.gray.emplace(v, Halved(in_memory ? view.gray : std::move(gray), halvings));
-    if (with_color) level.color.emplace(v, Halved(in_memory ? view.color : std::move(color), halvings));
+    if (with_color)
+      level.color.emplace(v, Halved(in_memory ? view.color : std::move(color), halvings));
     level.cameras.emplace(v, LevelCamera(view, halvings));
   }
   return level;

@@ -174,8 +174,7 @@ TEST(Workspace, ImagesBeyondTheCacheShareAreReadAgainOnDemand) {
   }
   // A bad image still stops the load, before anything runs.
   test::WriteRaw(tiny.Path("images/img1.png"), "not a png");
-  EXPECT_NE(InputErrorMessage([&] { LoadWorkspace(options); }).find("img1.png"),
-            std::string::npos);
+  EXPECT_NE(InputErrorMessage([&] { LoadWorkspace(options); }).find("img1.png"), std::string::npos);
 }
 
 TEST(Workspace, MissingWorkspace) {

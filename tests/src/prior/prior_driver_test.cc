@@ -193,8 +193,8 @@ TEST(PriorDriver, LayersBeyondTheBudgetAreMadeAgainWithTheSameEdges) {
   };
   const std::vector<std::vector<uint8_t>> kept = run(SIZE_MAX);
   EXPECT_NE(kept[0], kept[1]);
-  const size_t one_image = BoxScene::kWidth * BoxScene::kHeight * sizeof(int32_t) *
-                           UnionOnly().num_mask_levels;
+  const size_t one_image =
+      BoxScene::kWidth * BoxScene::kHeight * sizeof(int32_t) * UnionOnly().num_mask_levels;
   EXPECT_EQ(run(0), kept);
   EXPECT_EQ(run(one_image), kept);
 }

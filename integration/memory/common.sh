@@ -7,9 +7,9 @@
 # Small images, so that 100 of them run in CI time; each problem matches
 # MEMORY_SOURCES sources (the bound's S) in one coarse-to-fine round of the
 # conventional core (the four passes of geom_consistency).
-MEMORY_WIDTH=96
-MEMORY_HEIGHT=72
-MEMORY_SOURCES=4
+MEMORY_WIDTH=64
+MEMORY_HEIGHT=64
+MEMORY_SOURCES=2
 # 4 MiB unless set: states of a few images, images of a few, a round's
 # layers of a few.
 MEMORY_CACHE_GB=${MEMORY_CACHE_GB:-0.00390625}
@@ -19,7 +19,7 @@ MEMORY_STEREO_OPTIONS="--MspStereo.num_threads 1 --MspStereo.coarsest_image_size
 # the program's fixed part at one thread, M the sparse model while it is
 # read (the size of sparse/*.bin), P the pixels of the largest image at the
 # working resolution, S the sources of a problem.
-MEMORY_FIXED_MIB=112
+MEMORY_FIXED_MIB=120
 MEMORY_BYTES_PER_PIXEL=400
 MEMORY_BYTES_PER_PIXEL_AND_SOURCE=16
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Peak memory of msp_stereo against the number of images (README, "Memory"):
-# generated workspaces of each count (160x120 images, 4 sources per problem,
+# generated workspaces of each count (64x64 images, 2 sources per problem,
 # one round of the conventional core), msp_stereo on one thread with a 4 MiB
 # --PatchMatchStereo.cache_size, and a table of the peak resident memory, the
 # bound the README states for it and the user CPU time of each count.

@@ -10,6 +10,9 @@
 MEMORY_WIDTH=64
 MEMORY_HEIGHT=64
 MEMORY_SOURCES=2
+# Every point is seen by about every image, so the sparse model grows with
+# the images; few points keep it small beside what the test measures.
+MEMORY_POINTS=500
 # 4 MiB unless set: states of a few images, images of a few, a round's
 # layers of a few.
 MEMORY_CACHE_GB=${MEMORY_CACHE_GB:-0.00390625}
@@ -17,17 +20,18 @@ MEMORY_STEREO_OPTIONS="--MspStereo.num_threads 1 --MspStereo.coarsest_image_size
 
 # The bound of README's "Memory": F + M + P x (B0 + B1 x S) + cache_size, F
 # the program's fixed part at one thread, M the sparse model while it is
-# read (the size of sparse/*.bin), P the pixels of the largest image at the
+# read (twice the size of sparse/*.bin), P the pixels of the largest image at the
 # working resolution, S the sources of a problem.
 MEMORY_FIXED_MIB=120
 MEMORY_BYTES_PER_PIXEL=400
 MEMORY_BYTES_PER_PIXEL_AND_SOURCE=16
 
-# memory_workspace DIR N: a workspace of N generated images whose problems
-# have MEMORY_SOURCES sources each.
+# memory_workspace DIR N: a workspace of N generated images and about
+# MEMORY_POINTS sparse points whose problems have MEMORY_SOURCES sources each.
 memory_workspace() {
   "$BIN/msp_make_scene" --output "$1" --width "$MEMORY_WIDTH" --height "$MEMORY_HEIGHT" \
-    --num_cameras "$2" > "$1.scene.log" 2>&1 || { cat "$1.scene.log" >&2; return 1; }
+    --num_cameras "$2" --num_points "$MEMORY_POINTS" > "$1.scene.log" 2>&1 ||
+    { cat "$1.scene.log" >&2; return 1; }
   sed -i "s/^__auto__, [0-9]*\$/__auto__, $MEMORY_SOURCES/" "$1/stereo/patch-match.cfg"
 }
 
@@ -45,7 +49,7 @@ memory_peak_kib() {
 
 # memory_model_kib WS: M of the bound for workspace WS, in KiB.
 memory_model_kib() {
-  du -k -c "$1"/sparse/*.bin | tail -1 | cut -f1
+  echo $((2 * $(du -k -c "$1"/sparse/*.bin | tail -1 | cut -f1)))
 }
 
 # memory_bound_kib WS: the bound in KiB for workspace WS (made as above).

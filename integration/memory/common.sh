@@ -22,7 +22,7 @@ MEMORY_STEREO_OPTIONS="--MspStereo.num_threads 1 --MspStereo.coarsest_image_size
 # the program's fixed part at one thread, M the sparse model while it is
 # read (twice the size of sparse/*.bin), P the pixels of the largest image at the
 # working resolution, S the sources of a problem.
-MEMORY_FIXED_MIB=120
+MEMORY_FIXED_MIB=90
 MEMORY_BYTES_PER_PIXEL=400
 MEMORY_BYTES_PER_PIXEL_AND_SOURCE=16
 

@@ -102,47 +102,53 @@ std::vector<std::vector<int>> SelectAutoSourcesBatch(const SparseModel& model,
   std::vector<Eigen::Vector3d> centers(num_images);
   for (size_t i = 0; i < num_images; ++i) centers[i] = Center(model.images[i]);
 
-  // Per wanted image, per other image: the angle of every co-observation. As
-  // in COLMAP every pair of track elements of distinct images counts, so the
-  // shared point count is the sum of the counts.
-  std::vector<std::map<int, std::vector<WeightedAngle>>> angles(num_images);
+  // Each point's distinct images with their counts, and the points of every
+  // wanted image: the angles are then made one reference at a time, so that
+  // they take memory for one image's pairs, not for every pair of the model
+  // (with N images seeing the same points that is N times less).
+  std::vector<std::vector<std::pair<int, int64_t>>> distinct_of(model.points3D.size());
+  std::vector<std::vector<int>> points_of(num_images);
   std::vector<int> track;
-  std::vector<std::pair<int, int64_t>> distinct;  // (model index, times in the track)
-  for (const SparsePoint3D& point : model.points3D) {
+  for (size_t p = 0; p < model.points3D.size(); ++p) {
     track.clear();
-    bool any_wanted = false;
-    for (const TrackElement& element : point.track) {
+    for (const TrackElement& element : model.points3D[p].track) {
       const auto it = index_of.find(element.image_id);
-      if (it == index_of.end()) continue;
-      track.push_back(it->second);
-      any_wanted = any_wanted || wanted[it->second];
+      if (it != index_of.end()) track.push_back(it->second);
     }
-    if (!any_wanted) continue;
     std::sort(track.begin(), track.end());
-    distinct.clear();
+    std::vector<std::pair<int, int64_t>>& distinct = distinct_of[p];  // (model index, times)
     for (const int index : track) {
       if (distinct.empty() || distinct.back().first != index) distinct.emplace_back(index, 0);
       ++distinct.back().second;
     }
-    const Eigen::Vector3d X(point.xyz[0], point.xyz[1], point.xyz[2]);
-    for (size_t i = 0; i < distinct.size(); ++i) {
-      for (size_t j = 0; j < i; ++j) {
-        const int a = distinct[i].first;
-        const int b = distinct[j].first;
-        if (!wanted[a] && !wanted[b]) continue;
-        const WeightedAngle angle{TriangulationAngle(centers[a], centers[b], X),
-                                  distinct[i].second * distinct[j].second};
-        if (wanted[a]) angles[a][b].push_back(angle);
-        if (wanted[b]) angles[b][a].push_back(angle);
-      }
+    for (const auto& [index, times] : distinct) {
+      if (wanted[index] && distinct.size() > 1) points_of[index].push_back(static_cast<int>(p));
     }
   }
-
   const double min_angle_rad = min_triangulation_angle_deg * M_PI / 180.0;
   for (size_t ref = 0; ref < num_images; ++ref) {
     if (!wanted[ref]) continue;
+    // Per other image: the angle of every co-observation. As in COLMAP every
+    // pair of track elements of distinct images counts, so the shared point
+    // count is the sum of the counts. The angle is symmetric in the two
+    // centres, bit for bit.
+    std::map<int, std::vector<WeightedAngle>> angles;
+    for (const int p : points_of[ref]) {
+      const SparsePoint3D& point = model.points3D[p];
+      const Eigen::Vector3d X(point.xyz[0], point.xyz[1], point.xyz[2]);
+      const std::vector<std::pair<int, int64_t>>& distinct = distinct_of[p];
+      int64_t ref_times = 0;
+      for (const auto& [index, times] : distinct) {
+        if (index == static_cast<int>(ref)) ref_times = times;
+      }
+      for (const auto& [other, times] : distinct) {
+        if (other == static_cast<int>(ref)) continue;
+        angles[other].push_back(
+            WeightedAngle{TriangulationAngle(centers[ref], centers[other], X), ref_times * times});
+      }
+    }
     std::vector<std::pair<int, int64_t>> candidates;  // (model index, shared count)
-    for (const auto& [other, other_angles] : angles[ref]) {
+    for (const auto& [other, other_angles] : angles) {
       if (Percentile(other_angles, kTriangulationAnglePercentile) >= min_angle_rad) {
         int64_t shared = 0;
         for (const WeightedAngle& angle : other_angles) shared += angle.count;

@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "base/cache_budget.h"
 #include "base/stop_request.h"
 #include "colmap_ext/camera_conversion.h"
 #include "colmap_ext/errors.h"
@@ -195,8 +196,21 @@ void AssignDepthRanges(const PatchMatchStereoOptions& options, const Workspace& 
   }
 }
 
+// The sparse model's points and 2D observations have given the problems and
+// depth ranges; nothing reads them after, and they grow with the image count,
+// so their memory goes back before the images are read (README, "Memory").
+void DropObservations(SparseModel* model) {
+  for (SparseImage& image : model->images) std::vector<Point2D>().swap(image.points2D);
+  std::vector<SparsePoint3D>().swap(model->points3D);
+}
+
 // Cameras of every view at the working resolution; images of used views.
-void LoadViews(const std::vector<Problem>& problems, int max_image_size, Workspace* ws) {
+// Every used image is read here, so that a bad one stops the run before it
+// starts, but only those within `image_budget_bytes` stay in memory; the
+// others are read again by View::load_images when a problem needs them.
+void LoadViews(const std::vector<Problem>& problems, int max_image_size, size_t image_budget_bytes,
+               Workspace* ws) {
+  size_t kept_bytes = 0;
   std::vector<bool> used(ws->views.size(), false);
   for (const Problem& problem : problems) {
     used[problem.ref] = true;
@@ -223,7 +237,18 @@ void LoadViews(const std::vector<Problem>& problems, int max_image_size, Workspa
       // Reading hundreds of images takes a while: Ctrl-C need not wait for it.
       ThrowIfStopRequested();
       const std::string path = JoinPaths(JoinPaths(ws->path, "images"), view.name);
-      LoadViewImage(path, width, height, new_width, new_height, &view.gray, &view.color);
+      view.load_images = [path, width, height, new_width, new_height](DenseMap* gray,
+                                                                      DenseMap* color) {
+        LoadViewImage(path, width, height, new_width, new_height, gray, color);
+      };
+      view.load_images(&view.gray, &view.color);
+      const size_t bytes = (view.gray.data.size() + view.color.data.size()) * sizeof(float);
+      if (kept_bytes + bytes > image_budget_bytes) {
+        view.gray = DenseMap();
+        view.color = DenseMap();
+      } else {
+        kept_bytes += bytes;
+      }
     }
   }
 }
@@ -274,7 +299,9 @@ Workspace LoadWorkspace(const StereoCommandOptions& options) {
                       options.patch_match.min_triangulation_angle);
   problems = HandleMissingImages(std::move(problems), ws, options.patch_match.allow_missing_files);
   AssignDepthRanges(options.patch_match, ws, &problems);
-  LoadViews(problems, options.patch_match.max_image_size, &ws);
+  DropObservations(&ws.model);
+  LoadViews(problems, options.patch_match.max_image_size,
+            SplitCacheSize(options.patch_match.cache_size).image_bytes, &ws);
   ws.problems = std::move(problems);
   LoadPriorMaskLayers(options, &ws);
   return ws;

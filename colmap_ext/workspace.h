@@ -13,6 +13,8 @@ namespace msp {
 
 struct Workspace {
   std::string path;
+  // Cameras and image poses; the points and 2D observations are dropped
+  // once the problems and depth ranges are made (they grow with the images).
   SparseModel model;
   // One view per model image, in model order (= COLMAP's mvs::Model index).
   // Images (gray/color) are loaded only for views used by some problem.

@@ -168,7 +168,10 @@ void DefinePatchMatchStereoOptions(PatchMatchStereoOptions* p, OptionTable* t) {
   MSP_ADD_OPTION(t, *p, filter_geom_consistency_max_cost,
                  "Maximum forward-backward reprojection error in pixels for a source view to "
                  "count as consistent in the filter.");
-  MSP_ADD_OPTION(t, *p, cache_size, "Memory budget in gigabytes for cached per-image state.");
+  MSP_ADD_OPTION(t, *p, cache_size,
+                 "Memory budget in gigabytes for what is kept between image-passes: half for "
+                 "per-image state (spilled to stereo/msp beyond it), a quarter for images (read "
+                 "again beyond it), a quarter for the prior's label layers (README, Memory).");
   MSP_ADD_OPTION(t, *p, allow_missing_files,
                  "Skip missing images or maps of a problem instead of failing.");
   MSP_ADD_OPTION(t, *p, write_consistency_graph,

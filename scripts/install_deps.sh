@@ -12,6 +12,7 @@ PACKAGES=(
   dpkg-dev                                       # cpack -G DEB: dpkg-shlibdeps finds the runtime libraries
   colmap                                         # stereo_fusion for demos and tests (no CUDA needed)
   python3-numpy python3-opencv                   # bench/ply_stats.py
+  time                                           # peak memory of a run (integration/memory, bench/)
 )
 
 missing=()

@@ -18,9 +18,13 @@ namespace {
 // the image; above it generation stops being "a few seconds".
 constexpr int kMinImageSide = 64;
 constexpr int kMaxImageSide = 4096;
-// Fewer than 2 views cannot triangulate; the rig's arc is designed for ~10.
+// Fewer than 2 views cannot triangulate; the rig's arc is designed for ~10,
+// and up to 128 make the many-image workspaces of the memory test.
 constexpr int kMinCameras = 2;
-constexpr int kMaxCameras = 64;
+constexpr int kMaxCameras = 128;
+// Depth ranges take percentiles of each image's points: a hundred or more.
+constexpr int kMinPoints = 100;
+constexpr int kMaxPoints = 100000;
 
 void CheckOptions(const GeneratorOptions& options) {
   const RigOptions& rig = options.rig;
@@ -29,6 +33,10 @@ void CheckOptions(const GeneratorOptions& options) {
       rig.height > kMaxImageSide) {
     throw std::runtime_error("image size must be within [" + std::to_string(kMinImageSide) + ", " +
                              std::to_string(kMaxImageSide) + "] pixels per side");
+  }
+  if (options.num_points < kMinPoints || options.num_points > kMaxPoints) {
+    throw std::runtime_error("--num_points must be within [" + std::to_string(kMinPoints) + ", " +
+                             std::to_string(kMaxPoints) + "]");
   }
   if (rig.num_cameras < kMinCameras || rig.num_cameras > kMaxCameras) {
     throw std::runtime_error("--num_cameras must be within [" + std::to_string(kMinCameras) + ", " +
@@ -45,7 +53,9 @@ GeneratorSummary GenerateScene(const GeneratorOptions& options) {
   std::vector<RenderedView> rendered(views.size());
   ParallelIndices(static_cast<int>(views.size()),
                   [&](int i) { rendered[i] = RenderView(scene, views[i], i, options.seed); });
-  const SparseModel model = BuildSparseModel(scene, views, TrackOptions(), options.seed);
+  TrackOptions tracks;
+  tracks.num_points = options.num_points;
+  const SparseModel model = BuildSparseModel(scene, views, tracks, options.seed);
   const SurfaceSample sample = SampleVisibleSurface(scene, views, rendered);
 
   WriteColmapWorkspace(options.output, model, rendered);

@@ -14,6 +14,9 @@ struct GeneratorOptions {
   std::string output;  // workspace folder (created)
   uint64_t seed = 1;
   RigOptions rig;
+  // Target number of sparse points (TrackOptions::num_points); fewer make a
+  // small model for the many-image workspaces of the memory test.
+  int num_points = 6000;
 };
 
 struct GeneratorSummary {

@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
   command_line.Add("width", &options.rig.width, "Image width in pixels.");
   command_line.Add("height", &options.rig.height, "Image height in pixels.");
   command_line.Add("num_cameras", &options.rig.num_cameras, "Number of views on the camera arc.");
+  command_line.Add("num_points", &options.num_points,
+                   "Target number of sparse points (3D points with tracks) of the model.");
   try {
     if (command_line.Parse(argc, argv) == msp::ParseStatus::kHelp) {
       std::cout << command_line.Usage();

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/cache_budget.h"
 #include "base/log.h"
 #include "base/parallel_for.h"
 #include "base/progress.h"
@@ -21,6 +22,7 @@
 #include "deformable/deformable_sweeps.h"
 #include "patch_match/image_pyramid.h"
 #include "patch_match/pass_schedule.h"
+#include "patch_match/problem_level.h"
 #include "patch_match/run_summary.h"
 #include "patch_match/segment_planes.h"
 #include "patch_match/shared_passes.h"
@@ -37,15 +39,6 @@ namespace {
 constexpr float kPerturbDepth = 0.02f;
 constexpr float kPerturbNormalDegrees = 1.8f;
 constexpr float kDegreesToRadians = 3.14159265358979f / 180.0f;
-constexpr double kBytesPerGigabyte = 1024.0 * 1024.0 * 1024.0;
-
-// Images and cameras of every processed view at one pyramid level; colour
-// only for reference views, and only when the segmentation prior runs.
-struct Level {
-  std::map<int, DenseMap> gray;
-  std::map<int, DenseMap> color;
-  std::map<int, core::Camera> cameras;
-};
 
 // Problems that still need work, plus every problem whose state they read in
 // geometric passes (the passes are Jacobi, so this is a closure).
@@ -94,10 +87,13 @@ class CpuRunner {
         sink_(sink),
         engine_(engine),
         threads_(ResolveNumThreads(msp.num_threads)),
-        cache_(static_cast<size_t>(pm.cache_size * kBytesPerGigabyte), scratch_dir),
+        cache_(SplitCacheSize(pm.cache_size).state_bytes, scratch_dir),
         deformable_(msp, threads_, &engine),
         segmenter_(SegmenterFromName(msp.segmenter)) {
-    if (SegmentationPriorEnabled(msp)) prior_.reset(new PriorDriver(views, msp, threads_));
+    if (SegmentationPriorEnabled(msp)) {
+      prior_.reset(
+          new PriorDriver(views, msp, threads_, SplitCacheSize(pm.cache_size).layer_bytes));
+    }
     if (shared != nullptr) shared_.reset(new SharedPasses(*shared, views, problems));
   }
 
@@ -212,7 +208,7 @@ class CpuRunner {
   }
 
   // A restarted process continues after the last pass whose states of all its
-  // images it saved: their states, and the round's images, as they were then.
+  // images it saved, with their states as they were then.
   size_t ResumeShared(const std::vector<Pass>& schedule) {
     const int last = shared_->LastSavedPass(static_cast<int>(schedule.size()));
     if (last < 0) return 0;
@@ -220,7 +216,6 @@ class CpuRunner {
       cache_.Put(problems_[k].ref, shared_->Load(last, problems_[k].ref));
       cache_.EnforceBudget(problems_[k].ref);
     }
-    level_.reset(new Level(BuildLevel(schedule[last].halvings)));
     std::printf(
         "%s: resuming after %s (pass %d of %zu), whose states of its %zu images were saved\n",
         shared_->Name().c_str(), PassLabel(schedule[last]).c_str(), last + 1, schedule.size(),
@@ -245,39 +240,6 @@ class CpuRunner {
     std::vector<int> v = problem.srcs;
     v.push_back(problem.ref);
     return v;
-  }
-
-  Level BuildLevel(int halvings) const {
-    Level level;
-    std::set<int> used;
-    for (int k : run_) {
-      for (int v : ViewsOf(problems_[k])) used.insert(v);
-    }
-    for (int v : used) {
-      DenseMap gray = views_[v].gray;
-      core::Camera camera = views_[v].camera;
-      for (int h = 0; h < halvings; ++h) {
-        gray = DownsampleHalf(gray);
-        camera = HalveCamera(camera, gray.width, gray.height);
-      }
-      level.gray.emplace(v, std::move(gray));
-      level.cameras.emplace(v, camera);
-    }
-    if (prior_ != nullptr || msp_.segment_planes) {
-      for (int k : run_) {
-        const View& view = views_[problems_[k].ref];
-        if (view.color.channels != 3 || view.color.width != view.gray.width ||
-            view.color.height != view.gray.height) {
-          throw std::invalid_argument(
-              "view " + view.name +
-              ": the segmentation prior and segment planes need its RGB image");
-        }
-        DenseMap color = view.color;
-        for (int h = 0; h < halvings; ++h) color = DownsampleHalf(color);
-        level.color.emplace(problems_[k].ref, std::move(color));
-      }
-    }
-    return level;
   }
 
   core::PassParams MakeParams(const Problem& problem, const Pass& pass,
@@ -322,45 +284,66 @@ class CpuRunner {
 
   // One pass over every problem; a round's first pass starts the round.
   void RunPass(const Pass& pass, size_t p) {
-    if (pass.index == 0) StartRound(pass);
-    // Jacobi: every problem reads its sources' depths as they were before this pass.
-    std::map<int, DenseMap> prev_depth;
-    if (pass.kind == PassKind::kGeometric) {
-      prev_depth = CurrentDepths();
-      if (shared_ != nullptr) shared_->AddSourceDepths(static_cast<int>(p) - 1, &prev_depth);
-    }
+    if (pass.index == 0 && prior_ != nullptr) prior_->StartRound();
+    done_in_pass_.clear();
+    pass_index_ = static_cast<int>(p);
     for (size_t n = 0; n < run_.size(); ++n) {
       // The safe point between image-passes: nothing is half-written here.
       ThrowIfStopRequested();
-      RunProblemPass(pass, n, prev_depth);
+      RunProblemPass(pass, n);
+      done_in_pass_.insert(problems_[run_[n]].ref);
     }
   }
 
-  // The round's images and cameras; the previous round's become the coarser level.
-  void StartRound(const Pass& pass) {
-    coarser_ = std::move(level_);
-    level_.reset(new Level(BuildLevel(pass.halvings)));
-    if (prior_ != nullptr) prior_->StartRound();
+  // The images and cameras of one problem at the pass's level (colour of the
+  // reference for the prior and segment planes), and for the first pass of a
+  // round the reference's at the coarser level the planes come up from.
+  void BuildLevels(const Pass& pass, const Problem& problem) {
+    // The previous problem's go first: one problem's images at a time.
+    level_.reset();
+    coarser_.reset();
+    const int color_view = prior_ != nullptr || msp_.segment_planes ? problem.ref : -1;
+    level_.reset(new Level(BuildLevel(views_, ViewsOf(problem), color_view, pass.halvings)));
+    if (pass.start == PassStart::kUpsampled) {
+      coarser_.reset(new Level(BuildLevel(views_, {problem.ref}, -1, pass.halvings + 1)));
+    }
   }
 
-  // The depth map of every problem's current state.
-  std::map<int, DenseMap> CurrentDepths() {
+  // Jacobi: the depth of each source as it was before this pass, from its
+  // state (kept aside by the sources this pass has already updated).
+  std::map<int, DenseMap> SourceDepths(const Pass& pass, const Problem& problem) {
     std::map<int, DenseMap> depths;
-    for (int k : run_) {
-      const PixelState& s = cache_.Get(problems_[k].ref);
-      DenseMap d(s.width, s.height, 1);
-      d.data = s.depth;
-      depths.emplace(problems_[k].ref, std::move(d));
+    if (pass.kind != PassKind::kGeometric) return depths;
+    for (int v : problem.srcs) {
+      if (!cache_.Contains(v)) continue;  // not run: no depth, as a finished image
+      const core::Camera& camera = level_->cameras.at(v);
+      DenseMap depth(camera.width, camera.height, 1);
+      depth.data = cache_.ReadDepth(v, done_in_pass_.count(v) > 0);
+      if (depth.data.size() != static_cast<size_t>(camera.width) * camera.height) {
+        throw std::logic_error("source state of another size than its image");
+      }
+      depths.emplace(v, std::move(depth));
     }
+    // A shard's other sources are other processes' images, saved after the
+    // previous pass.
+    if (shared_ != nullptr) shared_->AddSourceDepths(pass_index_ - 1, problem.srcs, &depths);
     return depths;
   }
 
   // Pass `pass` of problem run_[n]: start, sweeps, median filter and local
   // refinement, then the prior and the outputs the pass names.
-  void RunProblemPass(const Pass& pass, size_t n, const std::map<int, DenseMap>& prev_depth) {
+  void RunProblemPass(const Pass& pass, size_t n) {
     const Problem& problem = problems_[run_[n]];
     const auto t0 = std::chrono::steady_clock::now();
+    BuildLevels(pass, problem);
+    const std::map<int, DenseMap> prev_depth = SourceDepths(pass, problem);
     PixelState state = PrepareState(pass, problem);
+    // Sources later in this pass read the depth this pass started from.
+    if (pass.kind == PassKind::kGeometric) {
+      state.previous_depth = state.depth;
+    } else {
+      state.previous_depth.clear();
+    }
     const core::PassParams params = MakeParams(problem, pass, prev_depth, state);
     ledger_.AddImagePass(pass.round,
                          std::to_string(params.state.width) + "x" +
@@ -550,8 +533,10 @@ class CpuRunner {
   const int threads_;
   StateCache cache_;
   std::vector<int> run_;
-  std::unique_ptr<Level> level_;        // the current round's
-  std::unique_ptr<Level> coarser_;      // the previous round's, null in the first round
+  std::unique_ptr<Level> level_;        // the current problem's, at the pass's level
+  std::unique_ptr<Level> coarser_;      // its reference at the coarser level, when upsampled
+  std::set<int> done_in_pass_;          // reference views the current pass has updated
+  int pass_index_ = 0;                  // of the current pass in the schedule
   std::unique_ptr<PriorDriver> prior_;  // null = no segmentation prior
   std::unique_ptr<SharedPasses> shared_;  // null = this process runs every problem
   DeformablePass deformable_;           // the deformable step and its buffers

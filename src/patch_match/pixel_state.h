@@ -1,8 +1,9 @@
 // Host storage of one image's per-pixel PatchMatch state: the plane (depth +
 // normal), the aggregated cost and the selected-view mask, 24 bytes per
 // pixel, plus the segmentation prior's edge map (1 byte per pixel) once the
-// prior has run for the image and the reliability classes (1 byte per pixel)
-// between the passes of a deformable round.
+// prior has run for the image, the reliability classes (1 byte per pixel)
+// between the passes of a deformable round and, in a geometric pass, the
+// depth the pass started from (4 bytes per pixel).
 #pragma once
 
 #include <cstddef>
@@ -27,6 +28,9 @@ struct PixelState {
   // Reliability classes (core::kReliable ...) of these planes, computed at
   // the end of a pass for the next pass of the round; empty otherwise.
   std::vector<uint8_t> classes;
+  // In a geometric pass, once it has updated this image: the depth before,
+  // which the pass's later images read (passes are Jacobi); else empty.
+  std::vector<float> previous_depth;
 
   PixelState() = default;
   PixelState(int w, int h)
@@ -41,7 +45,7 @@ struct PixelState {
   size_t Bytes() const {
     return depth.size() * sizeof(float) + normal.size() * sizeof(float) +
            cost.size() * sizeof(float) + mask.size() * sizeof(uint32_t) + edges.size() +
-           classes.size();
+           classes.size() + previous_depth.size() * sizeof(float);
   }
   core::PlaneHypothesis Plane(size_t i) const {
     const size_t n = depth.size();

@@ -99,14 +99,10 @@ void SharedPasses::WaitForPass(int pass, const std::string& label) {
   }
 }
 
-void SharedPasses::AddSourceDepths(int pass, std::map<int, DenseMap>* depths) {
-  std::set<int> sources;
-  for (int k : run_.owned) {
-    for (int v : problems_[k].srcs) {
-      if (problem_of_view_.count(v) && !depths->count(v)) sources.insert(v);
-    }
-  }
+void SharedPasses::AddSourceDepths(int pass, const std::vector<int>& sources,
+                                   std::map<int, DenseMap>* depths) {
   for (int v : sources) {
+    if (!problem_of_view_.count(v) || depths->count(v)) continue;
     PixelState state = run_.exchange->Load(pass, v);
     DenseMap depth(state.width, state.height, 1);
     depth.data = std::move(state.depth);

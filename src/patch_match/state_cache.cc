@@ -14,6 +14,26 @@
 #include "patch_match/pixel_state_io.h"
 
 namespace msp {
+namespace {
+
+PixelState ReadSpillFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  PixelState state;
+  if (!DeserializePixelState(bytes, &state)) {
+    throw std::runtime_error("cannot read spilled state " + path);
+  }
+  return state;
+}
+
+std::vector<float> DepthOf(const PixelState& state, bool previous) {
+  if (previous && state.previous_depth.empty()) {
+    throw std::logic_error("StateCache: no previous depth");
+  }
+  return previous ? state.previous_depth : state.depth;
+}
+
+}  // namespace
 
 StateCache::StateCache(size_t budget_bytes, std::string scratch_dir)
     : budget_bytes_(budget_bytes), scratch_dir_(std::move(scratch_dir)) {}
@@ -38,12 +58,7 @@ PixelState& StateCache::Get(int id) {
   if (it == resident_.end()) {
     auto sp = spilled_.find(id);
     if (sp == spilled_.end()) throw std::logic_error("StateCache: unknown image state");
-    std::ifstream in(sp->second, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    PixelState state;
-    if (!DeserializePixelState(bytes, &state)) {
-      throw std::runtime_error("cannot read spilled state " + sp->second);
-    }
+    PixelState state = ReadSpillFile(sp->second);
     std::remove(sp->second.c_str());
     spilled_.erase(sp);
     resident_bytes_ += state.Bytes();
@@ -51,6 +66,15 @@ PixelState& StateCache::Get(int id) {
   }
   Touch(id);
   return it->second;
+}
+
+std::vector<float> StateCache::ReadDepth(int id, bool previous) const {
+  auto it = resident_.find(id);
+  if (it != resident_.end()) return DepthOf(it->second, previous);
+  auto sp = spilled_.find(id);
+  if (sp == spilled_.end()) throw std::logic_error("StateCache: unknown image state");
+  // Read, not taken back: the file stays, so nothing is written again.
+  return DepthOf(ReadSpillFile(sp->second), previous);
 }
 
 PixelState StateCache::Take(int id) {

@@ -7,6 +7,7 @@
 #include <list>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "patch_match/pixel_state.h"
 
@@ -24,6 +25,10 @@ class StateCache {
   PixelState& Get(int id);
   // Removes the state of image `id` from the cache and returns it.
   PixelState Take(int id);
+  // A copy of the depth of image `id` (its previous_depth when `previous`,
+  // which must be there), from memory or read from its spilled file, which
+  // stays: the state is not made resident.
+  std::vector<float> ReadDepth(int id, bool previous) const;
   void Put(int id, PixelState state);
   // Spills other states until the resident ones fit the budget; `keep` stays.
   void EnforceBudget(int keep);

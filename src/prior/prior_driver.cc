@@ -94,12 +94,18 @@ std::vector<uint8_t> UnpackEdgeBit(const std::vector<uint8_t>& packed, uint8_t b
 }
 
 PriorDriver::PriorDriver(const std::vector<View>& views, const MspStereoOptions& options,
-                         int num_threads)
-    : views_(views), options_(options), segmenter_(SegmenterFromName(options.segmenter)) {
+                         int num_threads, size_t layer_budget_bytes)
+    : views_(views),
+      options_(options),
+      segmenter_(SegmenterFromName(options.segmenter)),
+      layer_budget_bytes_(layer_budget_bytes) {
   options_.num_threads = num_threads;
 }
 
-void PriorDriver::StartRound() { round_layers_.clear(); }
+void PriorDriver::StartRound() {
+  round_layers_.clear();
+  round_layer_bytes_ = 0;
+}
 
 bool PriorDriver::FromMaskFiles(int view) const {
   const ImageLabelLayers& given = views_[view].mask_layers;
@@ -113,6 +119,13 @@ const LabelLayers& PriorDriver::RoundLayers(int view, const DenseMap& color) {
       FromMaskFiles(view)
           ? ResampleNearest(views_[view].mask_layers.layers, color.width, color.height)
           : SegmentMultiscale(color, options_.num_mask_levels, segmenter_);
+  const size_t bytes =
+      static_cast<size_t>(layers.width) * layers.height * layers.NumLevels() * sizeof(int32_t);
+  if (round_layer_bytes_ + bytes > layer_budget_bytes_) {
+    uncached_layers_ = std::move(layers);
+    return uncached_layers_;
+  }
+  round_layer_bytes_ += bytes;
   return round_layers_.emplace(view, std::move(layers)).first->second;
 }
 

@@ -9,6 +9,7 @@
 // following passes.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -81,8 +82,12 @@ std::vector<uint8_t> UnpackEdgeBit(const std::vector<uint8_t>& packed, uint8_t b
 // Runs the prior for the passes; holds the current round's label layers.
 class PriorDriver {
  public:
-  // `num_threads` is the resolved worker count (>= 1).
-  PriorDriver(const std::vector<View>& views, const MspStereoOptions& options, int num_threads);
+  // `num_threads` is the resolved worker count (>= 1). The round's layers are
+  // kept for the next passes while they fit `layer_budget_bytes`; the
+  // layers of the images beyond are made again at each pass (the passes
+  // visit the images in turn, so keeping the first ones serves best).
+  PriorDriver(const std::vector<View>& views, const MspStereoOptions& options, int num_threads,
+              size_t layer_budget_bytes = SIZE_MAX);
 
   // Drops the previous round's layers (they are at another resolution).
   void StartRound();
@@ -104,6 +109,9 @@ class PriorDriver {
   MspStereoOptions options_;  // num_threads resolved
   Segmenter segmenter_;
   std::map<int, LabelLayers> round_layers_;
+  size_t layer_budget_bytes_;
+  size_t round_layer_bytes_ = 0;  // of round_layers_
+  LabelLayers uncached_layers_;   // the last image's beyond the budget
   std::set<int> logged_source_;
   double total_seconds_ = 0.0;
   int num_calls_ = 0;

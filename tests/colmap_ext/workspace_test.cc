@@ -152,6 +152,31 @@ TEST(Workspace, TextModelAndCustomConfigPath) {
   EXPECT_EQ(ws.views[2].camera.width, kWidth);
 }
 
+// Images beyond the image share of cache_size (a quarter of it) are read at
+// the start, to check them, and then dropped: load_images reads them again.
+TEST(Workspace, ImagesBeyondTheCacheShareAreReadAgainOnDemand) {
+  TinyWorkspace tiny;
+  StereoCommandOptions options = tiny.Options();
+  const Workspace kept = LoadWorkspace(options);
+  const double image_bytes = kWidth * kHeight * 4 * sizeof(float);
+  options.patch_match.cache_size = 4 * 1.5 * image_bytes / (1024.0 * 1024.0 * 1024.0);
+  const Workspace partly = LoadWorkspace(options);
+  EXPECT_FALSE(partly.views[0].gray.Empty());  // the first fits
+  for (int i = 0; i < 3; ++i) {
+    const View& view = partly.views[i];
+    ASSERT_TRUE(view.load_images);
+    EXPECT_EQ(view.gray.Empty(), i > 0);
+    EXPECT_EQ(view.color.Empty(), i > 0);
+    DenseMap gray, color;
+    view.load_images(&gray, &color);
+    EXPECT_EQ(gray.data, kept.views[i].gray.data);
+    EXPECT_EQ(color.data, kept.views[i].color.data);
+  }
+  // A bad image still stops the load, before anything runs.
+  test::WriteRaw(tiny.Path("images/img1.png"), "not a png");
+  EXPECT_NE(InputErrorMessage([&] { LoadWorkspace(options); }).find("img1.png"), std::string::npos);
+}
+
 TEST(Workspace, MissingWorkspace) {
   const TinyWorkspace tiny;
   StereoCommandOptions options = tiny.Options();

@@ -221,6 +221,40 @@ TEST(PatchMatchCpu, SpillingStateGivesIdenticalMaps) {
   ExpectSameMaps(in_memory, spilled);
 }
 
+// Views whose images are not in memory are read by their load_images each
+// time a problem needs them (a workspace beyond the cache's image share);
+// the maps must not change, with or without spilled state.
+TEST(PatchMatchCpu, ImagesReadOnDemandGiveIdenticalMaps) {
+  const std::vector<View> views = test::RenderFrontoParallelPlane(48, 36, 4, kPlaneDepth, 0.25f);
+  const std::vector<Problem> problems = AllProblems(4);
+  std::vector<View> on_demand = views;
+  int num_loads = 0;
+  for (size_t v = 0; v < on_demand.size(); ++v) {
+    on_demand[v].gray = DenseMap();
+    on_demand[v].color = DenseMap();
+    on_demand[v].load_images = [&views, &num_loads, v](DenseMap* gray, DenseMap* color) {
+      ++num_loads;
+      *gray = views[v].gray;
+      *color = views[v].color;
+    };
+  }
+  PatchMatchStereoOptions pm;
+  MspStereoOptions msp;
+  const test::TempDir scratch;
+  MemorySink in_memory;
+  RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), in_memory);
+  for (double cache_size : {32.0, 1e-6}) {
+    pm.cache_size = cache_size;
+    MemorySink read_on_demand;
+    num_loads = 0;
+    RunPatchMatchCpu(on_demand, problems, pm, msp, scratch.path(), read_on_demand);
+    ExpectSameMaps(in_memory, read_on_demand);
+    // Every image-pass reads its problem's four views, and the first pass
+    // of each later round its reference's again for the upsampling.
+    EXPECT_GE(num_loads, 4 * 4 * 4);
+  }
+}
+
 // With write_previews the pictures show exactly the final maps, with or
 // without deformable patches (and so the prior); a view whose outputs exist
 // gets none, and without the option there are none.

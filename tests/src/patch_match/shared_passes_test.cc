@@ -96,7 +96,7 @@ TEST(SharedPasses, ReadsOnlyTheSourcesOfOtherProcesses) {
   std::map<int, DenseMap> depths;
   depths[0] = DenseMap(3, 2, 1);
   depths[2] = DenseMap(3, 2, 1);
-  shared.AddSourceDepths(4, &depths);
+  shared.AddSourceDepths(4, {0, 1, 2, 3}, &depths);
   ASSERT_EQ(depths.size(), 4u);
   EXPECT_EQ(depths.at(1).data[0], 42.0f);
   EXPECT_EQ(depths.at(3).data[5], 44.0f);

@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tests/support/temp_dir.h"
 
@@ -60,6 +63,33 @@ TEST(StateCache, SpillKeepsPriorEdgesAndClasses) {
   EXPECT_TRUE(cache.Get(1).edges.empty());
   EXPECT_TRUE(cache.Get(1).classes.empty());
   EXPECT_FLOAT_EQ(cache.Get(1).mask[0], 5u);
+}
+
+// ReadDepth gives the depth, or the depth a geometric pass started from,
+// of a resident state and of a spilled one alike, and leaves a spilled
+// state in its file; the previous depth survives a spill.
+TEST(StateCache, ReadsDepthsOfResidentAndSpilledStates) {
+  const test::TempDir spill;
+  PixelState first = Filled(16, 8, 1.0f);
+  first.previous_depth.assign(first.depth.size(), 7.0f);
+  first.previous_depth[5] = 9.0f;
+  const std::vector<float> depth = first.depth, previous = first.previous_depth;
+  StateCache cache(1, spill.path());
+  cache.Put(0, std::move(first));
+  EXPECT_EQ(cache.ReadDepth(0, false), depth);
+  EXPECT_EQ(cache.ReadDepth(0, true), previous);
+  cache.Put(1, Filled(16, 8, 2.0f));
+  cache.EnforceBudget(1);
+  ASSERT_EQ(cache.NumSpills(), 1);
+  EXPECT_EQ(cache.ReadDepth(0, false), depth);
+  EXPECT_EQ(cache.ReadDepth(0, true), previous);
+  EXPECT_EQ(cache.ResidentBytes(), Filled(16, 8, 0.0f).Bytes());  // still spilled
+  // A state without a previous depth has none to give.
+  EXPECT_THROW(cache.ReadDepth(1, true), std::logic_error);
+  const PixelState& back = cache.Get(0);
+  EXPECT_EQ(back.previous_depth, previous);
+  EXPECT_EQ(back.depth, depth);
+  EXPECT_TRUE(cache.Get(1).previous_depth.empty());
 }
 
 }  // namespace

@@ -161,5 +161,43 @@ TEST(PriorDriver, MaskFileLayersGetNoGeometryLayers) {
   EXPECT_EQ(packed, std::vector<uint8_t>(packed.size(), 0));
 }
 
+// Layers beyond the driver's budget are made again at each call: the edges of
+// every call are those of a driver that keeps them all.
+TEST(PriorDriver, LayersBeyondTheBudgetAreMadeAgainWithTheSameEdges) {
+  BoxScene scene;
+  for (int row = 8; row < 16; ++row) {
+    for (int col = 10; col < 22; ++col) scene.color.At(row, col, 0) = 0.9f;
+  }
+  BoxScene other;
+  for (int row = 0; row < 12; ++row) {
+    for (int col = 0; col < BoxScene::kWidth; ++col) other.color.At(row, col, 2) = 0.1f;
+  }
+  std::vector<View> views(2);
+  views[0].name = "a.png";
+  views[1].name = "b.png";
+  const std::vector<core::PriorAnchors> anchors;
+  auto run = [&](size_t budget) {
+    PriorDriver driver(views, UnionOnly(), /*num_threads=*/1, budget);
+    std::vector<std::vector<uint8_t>> edges;
+    driver.StartRound();
+    for (int pass = 0; pass < 2; ++pass) {
+      for (int view = 0; view < 2; ++view) {
+        PriorPassInput input;
+        input.view = view;
+        input.color = view == 0 ? &scene.color : &other.color;
+        input.anchors = &anchors;
+        edges.push_back(driver.Run(input));
+      }
+    }
+    return edges;
+  };
+  const std::vector<std::vector<uint8_t>> kept = run(SIZE_MAX);
+  EXPECT_NE(kept[0], kept[1]);
+  const size_t one_image =
+      BoxScene::kWidth * BoxScene::kHeight * sizeof(int32_t) * UnionOnly().num_mask_levels;
+  EXPECT_EQ(run(0), kept);
+  EXPECT_EQ(run(one_image), kept);
+}
+
 }  // namespace
 }  // namespace msp

@@ -1,4 +1,4 @@
-// The cost model of a run (issue: where the time goes): for every round of
+// The cost model of a run: for every round of
 // the pass schedule and every step of a pass, its seconds and, in a build
 // with -DMSP_COUNT_EVALUATIONS=ON, the window costs it evaluated
 // (core/cost/evaluation_count.h), printed per pixel of the round's images so

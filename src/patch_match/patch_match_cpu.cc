@@ -286,11 +286,10 @@ class CpuRunner {
   void RunPass(const Pass& pass, size_t p) {
     if (pass.index == 0 && prior_ != nullptr) prior_->StartRound();
     done_in_pass_.clear();
-    pass_index_ = static_cast<int>(p);
     for (size_t n = 0; n < run_.size(); ++n) {
       // The safe point between image-passes: nothing is half-written here.
       ThrowIfStopRequested();
-      RunProblemPass(pass, n);
+      RunProblemPass(pass, p, n);
       done_in_pass_.insert(problems_[run_[n]].ref);
     }
   }
@@ -311,7 +310,8 @@ class CpuRunner {
 
   // Jacobi: the depth of each source as it was before this pass, from its
   // state (kept aside by the sources this pass has already updated).
-  std::map<int, DenseMap> SourceDepths(const Pass& pass, const Problem& problem) {
+  // `p` is the pass's index in the schedule.
+  std::map<int, DenseMap> SourceDepths(const Pass& pass, size_t p, const Problem& problem) {
     std::map<int, DenseMap> depths;
     if (pass.kind != PassKind::kGeometric) return depths;
     for (int v : problem.srcs) {
@@ -326,17 +326,18 @@ class CpuRunner {
     }
     // A shard's other sources are other processes' images, saved after the
     // previous pass.
-    if (shared_ != nullptr) shared_->AddSourceDepths(pass_index_ - 1, problem.srcs, &depths);
+    if (shared_ != nullptr) shared_->AddSourceDepths(static_cast<int>(p) - 1, problem.srcs, &depths);
     return depths;
   }
 
-  // Pass `pass` of problem run_[n]: start, sweeps, median filter and local
-  // refinement, then the prior and the outputs the pass names.
-  void RunProblemPass(const Pass& pass, size_t n) {
+  // Pass `pass` (index p in the schedule) of problem run_[n]: start, sweeps,
+  // median filter and local refinement, then the prior and the outputs the
+  // pass names.
+  void RunProblemPass(const Pass& pass, size_t p, size_t n) {
     const Problem& problem = problems_[run_[n]];
     const auto t0 = std::chrono::steady_clock::now();
     BuildLevels(pass, problem);
-    const std::map<int, DenseMap> prev_depth = SourceDepths(pass, problem);
+    const std::map<int, DenseMap> prev_depth = SourceDepths(pass, p, problem);
     PixelState state = PrepareState(pass, problem);
     // Sources later in this pass read the depth this pass started from.
     if (pass.kind == PassKind::kGeometric) {
@@ -536,7 +537,6 @@ class CpuRunner {
   std::unique_ptr<Level> level_;        // the current problem's, at the pass's level
   std::unique_ptr<Level> coarser_;      // its reference at the coarser level, when upsampled
   std::set<int> done_in_pass_;          // reference views the current pass has updated
-  int pass_index_ = 0;                  // of the current pass in the schedule
   std::unique_ptr<PriorDriver> prior_;  // null = no segmentation prior
   std::unique_ptr<SharedPasses> shared_;  // null = this process runs every problem
   DeformablePass deformable_;           // the deformable step and its buffers

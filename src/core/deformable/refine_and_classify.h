@@ -41,9 +41,7 @@ MSP_HD uint8_t LocalRefineAndClassifyPixel(const PassParams& p, int col, int row
   constexpr int kHalfWidth = kCurveHalfWidth + kLocalRefineRadius;
   CostCurveSampler sampler;
   if (!sampler.Prepare(p, col, row, kHalfWidth)) {
-    PassParams full = p;
-    full.refine_radius = kLocalRefineRadius;
-    LocalRefinePixel(full, col, row);
+    LocalRefinePixelWithin(p, col, row, kLocalRefineRadius);
     return kUnknown;
   }
   LazyCostCurve<CostCurveSampler> sweep(&sampler, 2 * kHalfWidth + 1);

@@ -34,7 +34,8 @@ MSP_HD float DepthAtDisparityOffset(float focal_baseline, float depth, float del
   return disparity > 0.0f ? focal_baseline / disparity : 0.0f;
 }
 
-MSP_HD void LocalRefinePixel(const PassParams& p, int col, int row) {
+// Sweeps +-radius disparity pixels (LocalRefinePixel: p.refine_radius).
+MSP_HD void LocalRefinePixelWithin(const PassParams& p, int col, int row, int radius) {
   const PixelStateView& s = p.state;
   const int i = s.Index(col, row);
   PlaneHypothesis cur = s.Get(i);
@@ -48,7 +49,7 @@ MSP_HD void LocalRefinePixel(const PassParams& p, int col, int row) {
   PrepareWindow(p, col, row, &w);
   float best_cost = AggregateViewCostBelow(p, w, cur, weights, kUnboundedCost);
   PlaneHypothesis best = cur;
-  for (int delta = -p.refine_radius; delta <= p.refine_radius; ++delta) {
+  for (int delta = -radius; delta <= radius; ++delta) {
     if (delta == 0) continue;
     PlaneHypothesis h = cur;
     h.depth = DepthAtDisparityOffset(fb, cur.depth, static_cast<float>(delta));
@@ -61,6 +62,10 @@ MSP_HD void LocalRefinePixel(const PassParams& p, int col, int row) {
   }
   s.Set(i, best);
   s.cost[i] = best_cost;
+}
+
+MSP_HD void LocalRefinePixel(const PassParams& p, int col, int row) {
+  LocalRefinePixelWithin(p, col, row, p.refine_radius);
 }
 
 }  // namespace core

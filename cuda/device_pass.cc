@@ -21,6 +21,10 @@ DevicePass::DevicePass(const core::PassParams& host)
   mask_ = DeviceBuffer<uint32_t>::FromHost(host.state.mask, n);
   device.state = core::PixelStateView{depth_.data(), normal_.data(), cost_.data(),
                                       mask_.data(),  width_,         height_};
+  if (host.unlit != nullptr) {
+    unlit_ = DeviceBuffer<uint8_t>::FromHost(host.unlit, n);
+    device.unlit = unlit_.data();
+  }
   params_ = DeviceBuffer<core::PassParams>::FromHost(&device, 1);
 }
 

@@ -40,6 +40,7 @@ class DevicePass {
   std::vector<DeviceBuffer<float>> src_depths_;
   DeviceBuffer<float> depth_, normal_, cost_;
   DeviceBuffer<uint32_t> mask_;
+  DeviceBuffer<uint8_t> unlit_;
   DeviceBuffer<core::PassParams> params_;
 };
 

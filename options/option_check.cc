@@ -130,6 +130,7 @@ void CheckMspStereoOptions(const MspStereoOptions& o) {
   MSP_CHECK_RANGE(o, iterations, 1, 3);
   MSP_CHECK_NON_NEGATIVE(o, deformable_max_image_size);
   MSP_CHECK_RANGE(o, finest_iterations, 1, 3);
+  MSP_CHECK_RANGE(o, black_level, 0.0, 1.0);
   MSP_CHECK_RANGE(o, finest_refine_radius, 1, 5);  // 5 = core::kLocalRefineRadius
   MSP_CHECK_RANGE(o, geometric_passes, 1, 3);  // 3 = kNumGeometricPasses, the most a round has
   MSP_CHECK_RANGE(o, finest_geometric_passes, 1, 3);

@@ -225,6 +225,10 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
   MSP_ADD_OPTION(t, *m, deformable_max_image_size,
                  "Rounds whose images' larger side exceeds this many pixels run the conventional "
                  "sweeps instead of the deformable step; 0 = no limit.");
+  MSP_ADD_OPTION(t, *m, black_level,
+                 "Pixels whose whole matching window is darker than this share of full scale "
+                 "(a black backdrop, the night sky) have nothing to match: they get no depth and "
+                 "cost no time; 0 = match every pixel.");
   MSP_ADD_OPTION(t, *m, finest_refine_radius,
                  "Disparity pixels each side of the local refinement's sweep in the finest round "
                  "when there are several rounds (1..5; the coarser rounds sweep 5): the planes "

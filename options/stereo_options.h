@@ -101,6 +101,9 @@ struct MspStereoOptions {
   double shard_timeout = 86400.0;
   // Folder of per-image segmentation mask layers; "" = <workspace>/masks.
   std::string mask_path = "";
+  // Pixels whose whole matching window is darker than this (grey, 0..1 of full scale) have
+  // nothing to match: no plane, never scored, empty in the maps; 0 = every pixel is matched.
+  double black_level = 0.03;
   // Coarse-to-fine rounds halve the images until the larger side is at most this (pixels).
   int coarsest_image_size = 80;
   // Red-black iterations per pass in every round but the finest of several (APD: 3), and in the

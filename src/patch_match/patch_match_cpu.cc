@@ -28,6 +28,7 @@
 #include "patch_match/shared_passes.h"
 #include "patch_match/state_cache.h"
 #include "patch_match/step_ledger.h"
+#include "patch_match/unlit_pixels.h"
 #include "patch_match/sweep_engine.h"
 #include "patch_match/sweeps.h"
 #include "prior/prior_driver.h"
@@ -345,7 +346,18 @@ class CpuRunner {
     } else {
       state.previous_depth.clear();
     }
-    const core::PassParams params = MakeParams(problem, pass, prev_depth, state);
+    const std::vector<uint8_t> unlit =
+        UnlitPixels(level_->gray.at(problem.ref), pm_.window_radius,
+                    static_cast<float>(msp_.black_level), threads_);
+    core::PassParams params = MakeParams(problem, pass, prev_depth, state);
+    if (!unlit.empty()) {
+      params.unlit = unlit.data();
+      if (pass.index == 0) {
+        Logf(kLogDetail, "  %s: %.1f%% of pixels unlit (nothing to match)\n",
+             views_[problem.ref].name.c_str(),
+             100.0 * std::count(unlit.begin(), unlit.end(), 1) / unlit.size());
+      }
+    }
     ledger_.AddImagePass(pass.round,
                          std::to_string(params.state.width) + "x" +
                              std::to_string(params.state.height),

@@ -48,6 +48,7 @@ MSP_HD void DeformableSweepPixel(const PassParams& p, int col, int row, int iter
                                  const AnchorSet* anchors, const PlaneMapView& planes,
                                  const DeformableParams& d, const AnchorSumsFn& anchor_sums,
                                  const PixelSampling& sampling) {
+  if (IsUnlit(p, p.state.Index(col, row))) return;
   if (anchors != nullptr && anchors->count > 0) {
     DeformableUpdatePixel(p, col, row, iteration, *anchors, planes, d, anchor_sums, sampling);
   } else {

@@ -83,8 +83,22 @@ struct PassParams {
   // Disparity pixels each side of LocalRefinePixel's sweep; the refinement
   // that also classifies (refine_and_classify.h) always sweeps kLocalRefineRadius.
   int refine_radius = kLocalRefineRadius;
+  // 1 at a pixel whose matching window holds nothing to match (UnlitPixels,
+  // src/patch_match/unlit_pixels.h); null when no pixel is so.
+  const uint8_t* unlit = nullptr;
   PixelStateView state;
 };
+
+// True at a pixel with nothing to match: it keeps no plane (depth 0, which
+// no neighbour propagates and the outputs leave empty), and no step scores it.
+MSP_HD bool IsUnlit(const PassParams& p, int i) { return p.unlit != nullptr && p.unlit[i] != 0u; }
+
+// Pixel i without a plane: depth 0, the highest cost, no selected views.
+MSP_HD void ClearPixel(const PixelStateView& s, int i) {
+  s.Set(i, PlaneHypothesis{0.0f, Vec3{0.0f, 0.0f, -1.0f}});
+  s.cost[i] = kMaxCost;
+  s.mask[i] = 0u;
+}
 
 MSP_HD bool DepthInRange(const PassParams& p, float depth) {
   return depth >= p.depth_min && depth <= p.depth_max;
@@ -358,15 +372,24 @@ MSP_HD float TopViewsCost(const float* costs, int num_views) {
 // Random plane for a pixel (round 0 initialisation).
 MSP_HD void InitializePixel(const PassParams& p, int col, int row) {
   const int i = p.state.Index(col, row);
+  if (IsUnlit(p, i)) {
+    ClearPixel(p.state, i);
+    return;
+  }
   Rng rng = MakeRng(RngKey(p.seed, p.image_id, p.pass_id, 0u, static_cast<uint32_t>(i)));
   p.state.Set(i, RandomHypothesis(p.ref_camera, col, row, p.depth_min, p.depth_max, &rng));
   p.state.mask[i] = 0u;
 }
 
 // Recomputes the stored cost of the current plane (after initialisation,
-// upsampling, or when a new pass changes the cost function).
+// upsampling, or when a new pass changes the cost function). An unlit pixel
+// loses the plane it was carried up with.
 MSP_HD void ScorePixel(const PassParams& p, int col, int row) {
   const int i = p.state.Index(col, row);
+  if (IsUnlit(p, i)) {
+    ClearPixel(p.state, i);
+    return;
+  }
   const PlaneHypothesis h = p.state.Get(i);
   float costs[kMaxSourceViews];
   if (!(h.depth > 0.0f)) {
@@ -437,9 +460,10 @@ MSP_HD PlaneHypothesis RefinementCandidate(const PassParams& p, int col, int row
 // One red-black update of pixel (col, row): propagation from the 8 regions
 // with view selection, then refinement on the selected views.
 MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
-  MSP_EVALUATION_PHASE(kPropagationPhase);
   const PixelStateView& s = p.state;
   const int i = s.Index(col, row);
+  if (IsUnlit(p, i)) return;
+  MSP_EVALUATION_PHASE(kPropagationPhase);
   const uint32_t pixel = static_cast<uint32_t>(i);
   constexpr int kRows = kNumPropagationCandidates + 1;  // + the current plane
   PlaneHypothesis cand[kRows];

@@ -38,7 +38,7 @@ MSP_HD void OfferSegmentPlane(const PassParams& p, int col, int row,
                               const PlaneHypothesis& candidate, float margin) {
   const PixelStateView& s = p.state;
   const int i = s.Index(col, row);
-  if (!DepthInRange(p, candidate.depth)) return;
+  if (IsUnlit(p, i) || !DepthInRange(p, candidate.depth)) return;
   float weights[kMaxSourceViews];
   MaskWeights(p, s.mask[i], weights);
   RefWindow w;

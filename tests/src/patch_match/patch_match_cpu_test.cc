@@ -328,6 +328,52 @@ TEST(PatchMatchCpu, ShardsTogetherGiveTheOneProcessMaps) {
   EXPECT_EQ(exchange.Clears(), 0);
 }
 
+// A black backdrop (the plane left of x = 0 in the world, dark in every
+// view) has nothing to match: with the default black level its pixels get
+// no depth, while the lit half is recovered as without a backdrop. Matching
+// it (black level 0) gives the backdrop the lit half's plane carried over.
+TEST(PatchMatchCpu, PixelsWithNothingToMatchGetNoDepth) {
+  std::vector<View> views = test::RenderFrontoParallelPlane(96, 72, 4, kPlaneDepth, 0.25f);
+  for (View& view : views) {
+    for (int r = 0; r < view.gray.height; ++r) {
+      for (int c = 0; c < view.gray.width; ++c) {
+        if (test::PointOnPlaneZ(view.camera, c, r, kPlaneDepth).x >= 0.0f) continue;
+        view.gray.At(r, c) = 0.01f * (view.gray.At(r, c) > 0.5f);  // dark: 0 or 1 % of full scale
+        for (int ch = 0; ch < 3; ++ch) view.color.At(r, c, ch) = view.gray.At(r, c);
+      }
+    }
+  }
+  const auto geometric_depth = [&](double black_level) {
+    PatchMatchStereoOptions pm;
+    MspStereoOptions msp;
+    msp.num_threads = 2;
+    msp.black_level = black_level;
+    MemorySink sink;
+    const test::TempDir scratch;
+    RunPatchMatchCpu(views, AllProblems(4), pm, msp, scratch.path(), sink);
+    return sink.maps.at({0, std::string("geometric")}).first;
+  };
+  const DenseMap depth = geometric_depth(MspStereoOptions().black_level);
+  const DenseMap matched = geometric_depth(0.0);
+  const int centre = 48;  // world x = 0 in the reference
+  int dark = 0, dark_valid = 0, dark_matched = 0, lit = 0, lit_accurate = 0;
+  for (int r = 12; r < depth.height - 12; ++r) {
+    for (int c = 12; c < depth.width - 12; ++c) {
+      if (c < centre - 8) {  // the backdrop's pixels whose whole window is dark
+        ++dark;
+        dark_valid += depth.At(r, c) > 0.0f;
+        dark_matched += matched.At(r, c) > 0.0f;
+      } else if (c > centre + 8) {
+        ++lit;
+        lit_accurate += std::fabs(depth.At(r, c) - kPlaneDepth) < 0.005f * kPlaneDepth;
+      }
+    }
+  }
+  EXPECT_EQ(dark_valid, 0);
+  EXPECT_GT(dark_matched, dark / 2) << dark_matched << " of " << dark;
+  EXPECT_GT(lit_accurate, 0.9 * lit) << lit_accurate << " of " << lit;
+}
+
 TEST(PatchMatchCpu, SkipsImagesWithFinalOutputs) {
   const std::vector<View> views = test::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
   PatchMatchStereoOptions pm;

@@ -386,7 +386,7 @@ class CpuRunner {
       }
     });
     if (pass.segment_planes) {
-      Measured(pass, Step::kSegmentPlanes, [&] { RunSegmentPlanes(params, problem); });
+      Measured(pass, Step::kSegmentPlanes, [&] { RunSegmentPlanes(params, problem, &state); });
     }
     if (pass.prior) Measured(pass, Step::kPrior, [&] { RunPrior(pass, problem, &state); });
     // Asked before the outputs are written: afterwards the image has them.
@@ -434,10 +434,13 @@ class CpuRunner {
 
   // Segment planes of one image after a pass (docs/method.md section 2.10),
   // then how many segments had a plane and how many pixels took theirs.
-  void RunSegmentPlanes(const core::PassParams& params, const Problem& problem) {
+  void RunSegmentPlanes(const core::PassParams& params, const Problem& problem,
+                        PixelState* state) {
     const auto t0 = std::chrono::steady_clock::now();
-    const SegmentPlanesReport r =
-        ApplySegmentPlanes(params, level_->color.at(problem.ref), segmenter_, threads_);
+    if (state->segments.empty()) {
+      state->segments = SegmentPlaneLabels(level_->color.at(problem.ref), segmenter_);
+    }
+    const SegmentPlanesReport r = ApplySegmentPlanes(params, state->segments, threads_);
     Logf(kLogDetail,
          "  segment planes: %d of %d segments, %.1f%% of pixels offered, %.1f%% took; %.2f s\n",
          r.num_planes, r.num_segments,

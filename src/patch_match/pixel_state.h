@@ -2,8 +2,9 @@
 // normal), the aggregated cost and the selected-view mask, 24 bytes per
 // pixel, plus the segmentation prior's edge map (1 byte per pixel) once the
 // prior has run for the image, the reliability classes (1 byte per pixel)
-// between the passes of a deformable round and, in a geometric pass, the
-// depth the pass started from (4 bytes per pixel).
+// between the passes of a deformable round, in a geometric pass the depth
+// the pass started from (4 bytes per pixel) and the colour segments of
+// segment planes (4 bytes per pixel).
 #pragma once
 
 #include <cstddef>
@@ -28,6 +29,10 @@ struct PixelState {
   // Reliability classes (core::kReliable ...) of these planes, computed at
   // the end of a pass for the next pass of the round; empty otherwise.
   std::vector<uint8_t> classes;
+  // The colour segments of segment planes at this round's size
+  // (SegmentPlaneLabels), made by the round's first pass that needs them;
+  // empty before, and after a spill (not saved: made again).
+  std::vector<int32_t> segments;
   // In a geometric pass, once it has updated this image: the depth before,
   // which the pass's later images read (passes are Jacobi); else empty.
   std::vector<float> previous_depth;
@@ -45,7 +50,8 @@ struct PixelState {
   size_t Bytes() const {
     return depth.size() * sizeof(float) + normal.size() * sizeof(float) +
            cost.size() * sizeof(float) + mask.size() * sizeof(uint32_t) + edges.size() +
-           classes.size() + previous_depth.size() * sizeof(float);
+           classes.size() + previous_depth.size() * sizeof(float) +
+           segments.size() * sizeof(int32_t);
   }
   core::PlaneHypothesis Plane(size_t i) const {
     const size_t n = depth.size();

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "base/parallel_for.h"
 #include "core/math/plane.h"
@@ -206,13 +207,19 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
   return planes;
 }
 
-SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params, const DenseMap& color,
-                                       Segmenter segmenter, int num_threads) {
-  const core::PixelStateView& s = params.state;
-  const int n = s.width * s.height;
-  const std::vector<int32_t> labels = SegmentGraph(
+std::vector<int32_t> SegmentPlaneLabels(const DenseMap& color, Segmenter segmenter) {
+  return SegmentGraph(
       color, SegmentationScale(kSegmentLevel, kNumSegmentLevels, color.width, color.height),
       segmenter);
+}
+
+SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
+                                       const std::vector<int32_t>& labels, int num_threads) {
+  const core::PixelStateView& s = params.state;
+  const int n = s.width * s.height;
+  if (labels.size() != static_cast<size_t>(n)) {
+    throw std::logic_error("segment labels and pixel state differ in size");
+  }
   std::vector<float> texture(n);
   std::vector<uint8_t> reliable(n);
   ParallelFor(0, s.height, num_threads, [&](int row) {

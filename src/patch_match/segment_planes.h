@@ -40,10 +40,14 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
                                            const std::vector<int32_t>& labels,
                                            const std::vector<uint8_t>& reliable, uint64_t key);
 
-// The whole step on the state of `params`: segments `color` (the reference
-// image at the pass's level, RGB planes) with `segmenter`, fits the planes,
-// offers them.
-SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params, const DenseMap& color,
-                                       Segmenter segmenter, int num_threads);
+// The colour segments of segment planes: `color` (the reference image at the
+// pass's level, RGB planes) cut by `segmenter`, ids 1..K. The same for every
+// pass of a round, so the runner keeps them with the image's state.
+std::vector<int32_t> SegmentPlaneLabels(const DenseMap& color, Segmenter segmenter);
+
+// The whole step on the state of `params`: fits the planes of the segments
+// `labels` (SegmentPlaneLabels), offers them.
+SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
+                                       const std::vector<int32_t>& labels, int num_threads);
 
 }  // namespace msp

@@ -28,9 +28,9 @@
 #include "patch_match/shared_passes.h"
 #include "patch_match/state_cache.h"
 #include "patch_match/step_ledger.h"
-#include "patch_match/unlit_pixels.h"
 #include "patch_match/sweep_engine.h"
 #include "patch_match/sweeps.h"
+#include "patch_match/unlit_pixels.h"
 #include "prior/prior_driver.h"
 
 namespace msp {

@@ -111,6 +111,33 @@ TEST(SweepParity, CheckerboardIterationsConvergeAlike) {
   EXPECT_LE(test::FlippedShare(cpu, gpu), test::kMaxFlippedShare);
 }
 
+// Unlit pixels (a block of the reference marked so) reach the device: they
+// get no plane there either, and the iterations leave them empty.
+TEST(SweepParity, UnlitPixelsStayEmptyOnTheDevice) {
+  MSP_SKIP_WITHOUT_GPU();
+  test::PlaneScene s;
+  MakePassScene(&s);
+  const int width = s.ref.width, height = s.ref.height;
+  std::vector<uint8_t> unlit(static_cast<size_t>(width) * height, 0);
+  for (int row = 0; row < height / 2; ++row) {
+    for (int col = 0; col < width / 2; ++col) unlit[row * width + col] = 1;
+  }
+  s.params.unlit = unlit.data();
+  StateCopy gpu(s.params);
+  GpuEngine().Initialize(gpu.params);
+  GpuEngine().Checkerboard(gpu.params, 3);
+  int lit_with_plane = 0;
+  for (size_t i = 0; i < unlit.size(); ++i) {
+    if (unlit[i]) {
+      ASSERT_EQ(gpu.depth[i], 0.0f) << "pixel " << i;
+      ASSERT_EQ(gpu.cost[i], core::kMaxCost) << "pixel " << i;
+    } else {
+      lit_with_plane += gpu.depth[i] > 0.0f;
+    }
+  }
+  EXPECT_EQ(lit_with_plane, static_cast<int>(unlit.size()) - width / 2 * (height / 2));
+}
+
 TEST(SweepParity, LocalRefineKeepsTheSameDepths) {
   MSP_SKIP_WITHOUT_GPU();
   test::PlaneScene s;

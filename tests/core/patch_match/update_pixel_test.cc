@@ -268,6 +268,29 @@ TEST(UpdatePixel, WeightedViewsOnlyFallsBackToAllViewsWhenTheSelectionFails) {
   EXPECT_NEAR(PlaneAt(p, kCol, kRow).depth, kDepth, 0.01f * kDepth);
 }
 
+// An unlit pixel (PassParams::unlit) holds no plane after initialisation or
+// scoring, is not updated, and no neighbour takes a plane from it.
+TEST(UpdatePixel, UnlitPixelHoldsNoPlaneAndIsNeverUpdated) {
+  test::PlaneScene s;
+  MakeScoredScene(&s);
+  PassParams& p = s.params;
+  std::vector<uint8_t> unlit(static_cast<size_t>(p.state.width) * p.state.height, 0);
+  const int i = p.state.Index(kCol, kRow);
+  unlit[i] = 1;
+  p.unlit = unlit.data();
+  ASSERT_GT(PlaneAt(p, kCol, kRow).depth, 0.0f);  // scored before it was marked
+  ScorePixel(p, kCol, kRow);
+  EXPECT_EQ(PlaneAt(p, kCol, kRow).depth, 0.0f);
+  EXPECT_EQ(StoredCost(p, kCol, kRow), kMaxCost);
+  for (int iteration = 0; iteration < 3; ++iteration) UpdatePixel(p, kCol, kRow, iteration);
+  EXPECT_EQ(PlaneAt(p, kCol, kRow).depth, 0.0f);
+  InitializePixel(p, kCol, kRow);
+  EXPECT_EQ(PlaneAt(p, kCol, kRow).depth, 0.0f);
+  // A lit neighbour still finds the true plane around it.
+  UpdatePixel(p, kCol + 1, kRow, 0);
+  EXPECT_NEAR(PlaneAt(p, kCol + 1, kRow).depth, kDepth, 0.01f * kDepth);
+}
+
 }  // namespace
 }  // namespace core
 }  // namespace msp

@@ -348,7 +348,7 @@ class CpuRunner {
     }
     const std::vector<uint8_t> unlit =
         UnlitPixels(level_->gray.at(problem.ref), pm_.window_radius,
-                    static_cast<float>(msp_.black_level), threads_);
+                    static_cast<float>(msp_.black_level));
     core::PassParams params = MakeParams(problem, pass, prev_depth, state);
     if (!unlit.empty()) {
       params.unlit = unlit.data();

@@ -2,42 +2,19 @@
 
 #include <algorithm>
 
-#include "base/parallel_for.h"
+#include "base/dilate_mask.h"
 
 namespace msp {
 
-std::vector<uint8_t> UnlitPixels(const DenseMap& gray, int radius, float black_level,
-                                 int num_threads) {
+std::vector<uint8_t> UnlitPixels(const DenseMap& gray, int radius, float black_level) {
   if (!(black_level > 0.0f)) return {};
-  const int width = gray.width, height = gray.height;
-  // A window is unlit when its brightest pixel is: the maximum over the rows
-  // of each column first, then over the columns of those.
-  std::vector<float> column_max(static_cast<size_t>(width) * height);
-  ParallelFor(0, height, num_threads, [&](int row) {
-    const int r0 = std::max(0, row - radius), r1 = std::min(height - 1, row + radius);
-    for (int col = 0; col < width; ++col) {
-      float m = gray.At(r0, col);
-      for (int r = r0 + 1; r <= r1; ++r) m = std::max(m, gray.At(r, col));
-      column_max[static_cast<size_t>(row) * width + col] = m;
-    }
-  });
-  std::vector<uint8_t> unlit(column_max.size(), 0);
-  std::vector<int> count(height, 0);
-  ParallelFor(0, height, num_threads, [&](int row) {
-    const float* line = column_max.data() + static_cast<size_t>(row) * width;
-    for (int col = 0; col < width; ++col) {
-      const int c0 = std::max(0, col - radius), c1 = std::min(width - 1, col + radius);
-      const float m = *std::max_element(line + c0, line + c1 + 1);
-      if (m < black_level) {
-        unlit[static_cast<size_t>(row) * width + col] = 1;
-        ++count[row];
-      }
-    }
-  });
-  for (int c : count) {
-    if (c > 0) return unlit;
-  }
-  return {};
+  // A window is lit when one of its pixels is: the lit pixels dilated.
+  std::vector<uint8_t> lit(gray.data.size());
+  for (size_t i = 0; i < lit.size(); ++i) lit[i] = gray.data[i] >= black_level ? 1 : 0;
+  std::vector<uint8_t> unlit = DilateMask(lit, gray.width, gray.height, radius);
+  for (uint8_t& u : unlit) u = 1 - u;
+  if (std::find(unlit.begin(), unlit.end(), 1) == unlit.end()) return {};
+  return unlit;
 }
 
 }  // namespace msp

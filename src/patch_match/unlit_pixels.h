@@ -17,7 +17,6 @@ namespace msp {
 // 1 where every pixel of the (2 radius + 1)^2 window around the pixel is
 // below `black_level` (grey, 0..1), else 0; empty when no pixel is unlit or
 // black_level is 0 (the check is off).
-std::vector<uint8_t> UnlitPixels(const DenseMap& gray, int radius, float black_level,
-                                 int num_threads);
+std::vector<uint8_t> UnlitPixels(const DenseMap& gray, int radius, float black_level);
 
 }  // namespace msp

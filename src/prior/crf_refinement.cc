@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "base/dilate_mask.h"
 #include "base/parallel_for.h"
 
 namespace msp {
@@ -44,33 +45,6 @@ struct ActiveSet {
   std::vector<int32_t> labels;  // active * kMaxCrfLabels
   std::vector<uint8_t> count;   // candidates per active pixel
 };
-
-// Dilation of the edge map by the window radius (separable max filter).
-std::vector<uint8_t> DilateEdges(const std::vector<uint8_t>& edges, int w, int h) {
-  std::vector<uint8_t> horizontal(edges.size(), 0);
-  for (int row = 0; row < h; ++row) {
-    const uint8_t* src = edges.data() + static_cast<size_t>(row) * w;
-    uint8_t* dst = horizontal.data() + static_cast<size_t>(row) * w;
-    for (int col = 0; col < w; ++col) {
-      if (!src[col]) continue;
-      for (int c = std::max(0, col - kCrfWindowRadius);
-           c <= std::min(w - 1, col + kCrfWindowRadius); ++c) {
-        dst[c] = 1;
-      }
-    }
-  }
-  std::vector<uint8_t> out(edges.size(), 0);
-  for (int row = 0; row < h; ++row) {
-    for (int col = 0; col < w; ++col) {
-      if (!horizontal[static_cast<size_t>(row) * w + col]) continue;
-      for (int r = std::max(0, row - kCrfWindowRadius);
-           r <= std::min(h - 1, row + kCrfWindowRadius); ++r) {
-        out[static_cast<size_t>(r) * w + col] = 1;
-      }
-    }
-  }
-  return out;
-}
 
 // Candidate labels of pixel (col, row): its own, then the others of its
 // window by decreasing count (ties: smaller id), at most kMaxCrfLabels.
@@ -113,7 +87,9 @@ int CollectCandidates(const Segmentation& seg, int col, int row, int32_t* out) {
 
 ActiveSet FindActivePixels(const Segmentation& seg) {
   const size_t num_pixels = static_cast<size_t>(seg.width) * seg.height;
-  const std::vector<uint8_t> near_edge = DilateEdges(seg.edges, seg.width, seg.height);
+  // The pixels within the window radius of an edge.
+  const std::vector<uint8_t> near_edge =
+      DilateMask(seg.edges, seg.width, seg.height, kCrfWindowRadius);
   ActiveSet set;
   set.index.assign(num_pixels, -1);
   int32_t candidates[kMaxCrfLabels];

@@ -18,7 +18,7 @@ DenseMap DarkImageWithOnePixel(int bright_row, int bright_col, float bright) {
 TEST(UnlitPixels, AWindowIsUnlitExactlyWhenNoneOfItsPixelsReachesTheLevel) {
   const int radius = 2;
   const DenseMap gray = DarkImageWithOnePixel(5, 8, 0.5f);
-  const std::vector<uint8_t> unlit = UnlitPixels(gray, radius, kBlackLevel, 2);
+  const std::vector<uint8_t> unlit = UnlitPixels(gray, radius, kBlackLevel);
   ASSERT_EQ(unlit.size(), gray.data.size());
   for (int row = 0; row < gray.height; ++row) {
     for (int col = 0; col < gray.width; ++col) {
@@ -30,7 +30,7 @@ TEST(UnlitPixels, AWindowIsUnlitExactlyWhenNoneOfItsPixelsReachesTheLevel) {
 
 TEST(UnlitPixels, APixelAtTheLevelIsLit) {
   const std::vector<uint8_t> unlit =
-      UnlitPixels(DarkImageWithOnePixel(0, 0, kBlackLevel), 1, kBlackLevel, 1);
+      UnlitPixels(DarkImageWithOnePixel(0, 0, kBlackLevel), 1, kBlackLevel);
   ASSERT_FALSE(unlit.empty());
   EXPECT_EQ(unlit[0], 0);
   EXPECT_EQ(unlit[1 * 20 + 1], 0);  // the corner pixel is in its window
@@ -38,10 +38,10 @@ TEST(UnlitPixels, APixelAtTheLevelIsLit) {
 }
 
 TEST(UnlitPixels, EmptyWhenOffOrWhenEveryWindowIsLit) {
-  EXPECT_TRUE(UnlitPixels(DarkImageWithOnePixel(5, 8, 0.5f), 2, 0.0f, 2).empty());
+  EXPECT_TRUE(UnlitPixels(DarkImageWithOnePixel(5, 8, 0.5f), 2, 0.0f).empty());
   DenseMap lit(20, 10, 1);
   for (float& v : lit.data) v = 0.2f;
-  EXPECT_TRUE(UnlitPixels(lit, 2, kBlackLevel, 2).empty());
+  EXPECT_TRUE(UnlitPixels(lit, 2, kBlackLevel).empty());
 }
 
 }  // namespace

@@ -14,10 +14,12 @@
 // ray. Costs are the photometric cost of a pass's start (mean of the 3 best
 // views, core::ScorePixel), with the run's defaults for the window.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <map>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 #include <vector>
@@ -39,9 +41,12 @@ constexpr float kAmbiguousCost = 0.1f;
 // A pixel is wrong when its depth is off by more than this (the evaluator's
 // first threshold).
 constexpr float kWrongRelativeDepth = 0.01f;
+constexpr float kFarRelativeDepth = 0.05f;  // the evaluator's second threshold
 
 struct Tally {
   long wrong = 0, search = 0, ambiguous = 0, against = 0, right = 0, empty = 0;
+  long other_surface = 0;       // wrong pixels on the plane of another large surface
+  long far = 0, far_other = 0;  // off by more than kFarRelativeDepth; of them on another surface
   double chosen_cost = 0.0, true_cost = 0.0;
 
   void Add(const Tally& o) {
@@ -51,6 +56,9 @@ struct Tally {
     against += o.against;
     right += o.right;
     empty += o.empty;
+    other_surface += o.other_surface;
+    far += o.far;
+    far_other += o.far_other;
     chosen_cost += o.chosen_cost;
     true_cost += o.true_cost;
   }
@@ -60,10 +68,12 @@ struct Tally {
     const long all = wrong + right + empty;
     std::printf(
         "%-22s %8ld  wrong %5.1f%%  empty %5.1f%% | of wrong: truth cheaper %5.1f%%  tie %5.1f%%  "
-        "truth dearer %5.1f%%  (mean cost chosen %.3f, true %.3f)\n",
+        "truth dearer %5.1f%%  (mean cost chosen %.3f, true %.3f); on another surface's plane "
+        "%5.1f%%; off by > 5%%: %5.1f%% of wrong, %5.1f%% of them on another surface\n",
         label, all, 100.0 * wrong / std::max(1L, all), 100.0 * empty / std::max(1L, all),
         100.0 * search / n, 100.0 * ambiguous / n, 100.0 * against / n, chosen_cost / n,
-        true_cost / n);
+        true_cost / n, 100.0 * other_surface / n, 100.0 * far / n,
+        100.0 * far_other / std::max(1L, far));
   }
 };
 
@@ -90,6 +100,65 @@ core::PlaneHypothesis PlaneAt(const DenseMap& depth, const DenseMap& normal,
   return h;
 }
 
+// The large planar surfaces of an image's ground truth: planes n.X + d = 0
+// (camera frame) holding at least kMinSurfaceShare of its pixels.
+struct Surface {
+  core::Vec3 n;
+  float d;
+};
+constexpr double kMinSurfaceShare = 0.005;
+// Plane parameters are grouped at these steps (unit normal, metres).
+constexpr float kNormalStep = 0.05f;
+constexpr float kOffsetStep = 0.02f;
+// A point lies on a surface within this share of its depth, with a normal
+// within this angle.
+constexpr float kOnSurfaceDepth = 0.01f;
+constexpr float kOnSurfaceCosine = -2.0f;  // any normal (textureless normals are noise)
+// Two surfaces are one when their normals and offsets are this close.
+constexpr float kSameSurfaceCosine = 0.966f;  // 15 degrees
+constexpr float kSameSurfaceOffset = 0.05f;   // metres
+
+std::vector<Surface> LargeSurfaces(const DenseMap& depth, const DenseMap& normal,
+                                   const core::Camera& camera) {
+  std::map<std::array<int, 4>, std::pair<long, Surface>> groups;
+  for (int row = 0; row < depth.height; ++row) {
+    for (int col = 0; col < depth.width; ++col) {
+      const float z = depth.At(row, col);
+      if (!(z > 0.0f)) continue;
+      const core::Vec3 n{normal.At(row, col, 0), normal.At(row, col, 1), normal.At(row, col, 2)};
+      const core::Vec3 X =
+          core::BackProject(camera, static_cast<float>(col), static_cast<float>(row), z);
+      const float d = -core::Dot(n, X);
+      const std::array<int, 4> key{static_cast<int>(std::lround(n.x / kNormalStep)),
+                                   static_cast<int>(std::lround(n.y / kNormalStep)),
+                                   static_cast<int>(std::lround(n.z / kNormalStep)),
+                                   static_cast<int>(std::lround(d / kOffsetStep))};
+      auto& g = groups[key];
+      if (g.first++ == 0) g.second = Surface{n, d};
+    }
+  }
+  std::vector<Surface> surfaces;
+  const double min_pixels = kMinSurfaceShare * depth.width * depth.height;
+  for (const auto& g : groups) {
+    if (g.second.first >= min_pixels) surfaces.push_back(g.second.second);
+  }
+  return surfaces;
+}
+
+// Whether X (normal n) lies on a surface other than `own`, the pixel's true plane.
+bool OnOtherSurface(const std::vector<Surface>& surfaces, const Surface& own, const core::Vec3& X,
+                    const core::Vec3& n) {
+  for (const Surface& s : surfaces) {
+    const bool is_own =
+        core::Dot(s.n, own.n) > kSameSurfaceCosine && std::fabs(s.d - own.d) < kSameSurfaceOffset;
+    if (!is_own && std::fabs(core::Dot(s.n, X) + s.d) < kOnSurfaceDepth * X.z &&
+        core::Dot(s.n, n) > kOnSurfaceCosine) {
+      return true;
+    }
+  }
+  return false;
+}
+
 void Run(const std::string& workspace_path, int halvings, const std::string& input_type) {
   StereoCommandOptions options;
   options.workspace_path = workspace_path;
@@ -110,6 +179,7 @@ void Run(const std::string& workspace_path, int halvings, const std::string& inp
     if (depth.width != gt_depth.width || flat.cols != gt_depth.width) {
       throw std::runtime_error(ref.name + ": maps and ground truth differ in size");
     }
+    const std::vector<Surface> surfaces = LargeSurfaces(gt_depth, gt_normal, ref.camera);
     std::vector<int> ids = problem.srcs;
     ids.push_back(problem.ref);
     const Level level = BuildLevel(ws.views, ids, -1, halvings);
@@ -150,6 +220,20 @@ void Run(const std::string& workspace_path, int halvings, const std::string& inp
           continue;
         }
         ++t.wrong;
+        const core::Vec3 X = core::BackProject(ref.camera, static_cast<float>(gc),
+                                               static_cast<float>(gr), depth.At(gr, gc));
+        const core::Vec3 n{normal.At(gr, gc, 0), normal.At(gr, gc, 1), normal.At(gr, gc, 2)};
+        const core::Vec3 true_n{gt_normal.At(gr, gc, 0), gt_normal.At(gr, gc, 1),
+                                gt_normal.At(gr, gc, 2)};
+        const core::Vec3 true_X = core::BackProject(ref.camera, static_cast<float>(gc),
+                                                    static_cast<float>(gr), gt_depth.At(gr, gc));
+        const bool other =
+            OnOtherSurface(surfaces, Surface{true_n, -core::Dot(true_n, true_X)}, X, n);
+        t.other_surface += other ? 1 : 0;
+        if (std::fabs(chosen.depth - truth.depth) > kFarRelativeDepth * truth.depth) {
+          ++t.far;
+          t.far_other += other ? 1 : 0;
+        }
         const float c_chosen = StartCost(p, col, row, chosen);
         const float c_true = StartCost(p, col, row, truth);
         t.chosen_cost += c_chosen;

@@ -339,6 +339,10 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
   MSP_ADD_OPTION(t, *m, sampling_solutions,
                  "[1, " + std::to_string(core::kMaxSamplingSolutions) +
                      "]. J: sampling solutions drawn per optimization.");
+  MSP_ADD_OPTION(t, *m, sampling_local_search,
+                 "Iterative local search (the paper's): in every iteration the solution in use "
+                 "competes with J perturbations of itself, each re-sampling one sub-patch; false = "
+                 "J independent draws once per pass that replace it.");
   MSP_ADD_OPTION(t, *m, disparity_samples,
                  "{1, 3, 5, 7}. mu: disparities of a cost profile (eq. 8).");
   MSP_ADD_OPTION(t, *m, disparity_step,

@@ -190,6 +190,10 @@ struct MspStereoOptions {
   bool synergistic_optimization = true;
   // J: sampling solutions drawn per optimization (the one in use competes with them).
   int sampling_solutions = 6;
+  // The paper's iterative local search: in every iteration the solution in use competes with J
+  // perturbations of itself (one sub-patch re-sampled each); false = J independent draws once per
+  // pass that replace it.
+  bool sampling_local_search = false;
   // mu: disparities of a cost profile (odd).
   int disparity_samples = 5;
   // delta: step between the profile's disparities, in pixels of disparity.

@@ -43,15 +43,23 @@ DeformableStepReport DeformablePass::Run(const Pass& pass, const core::PassParam
   settings.anchors.equidistribution_iterations = msp_.equidistribution_iterations;
   settings.cost = core::DefaultDeformableParams();
   if (msp_.disassemble_clustering) {
+    // The paper quadruples the anchors per sector (4 rays, 32 hits) for the
+    // clusters to form, in every round.
+    settings.anchors.rays_per_sector = core::kMaxRaysPerSector;
     settings.anchors.max_anchors = core::kMaxKeptAnchors;
     settings.cost.disassemble_clustering = true;
     settings.cost.clusters =
         core::ClusterParams{msp_.dbscan_eta, static_cast<float>(msp_.dbscan_gamma)};
   }
   settings.synergistic = msp_.synergistic_optimization;
-  settings.synergy = core::SynergyParams{
-      msp_.sampling_solutions, msp_.disparity_samples, static_cast<float>(msp_.disparity_step),
-      static_cast<float>(msp_.variance_weight), msp_.profile_cost_term};
+  settings.synergy = core::SynergyParams{msp_.sampling_solutions,
+                                         msp_.disparity_samples,
+                                         static_cast<float>(msp_.disparity_step),
+                                         static_cast<float>(msp_.variance_weight),
+                                         msp_.profile_cost_term,
+                                         msp_.sampling_local_search};
+  // Local search keeps improving one solution: it runs in every iteration.
+  settings.synergy_iterations = msp_.sampling_local_search ? pass.iterations : 1;
   ConfineAnchors(state->edges, maps, &settings);
   report.sweeps = engine_->DeformableIterations(params, maps, settings, pass.iterations,
                                                 pass.prior ? &prior_anchors_ : nullptr);

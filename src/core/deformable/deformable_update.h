@@ -116,7 +116,8 @@ MSP_HD void DeformableUpdatePixel(const PassParams& p, int col, int row, int ite
                                      sampling.params, sampling.solution, &sampled) &&
                     UsableCandidate(p, col, row, sampled);
     }
-    PrepareSampledWindows(p, anchors, clusters, d, *sampling.solution, &windows.anchors);
+    PrepareSampledWindows(p, anchors, clusters, d, sampling.params, pixel, *sampling.solution,
+                          &windows.anchors);
   }
   // The anchors' candidates in every view: view selection reads them all.
   DeformableCandidateViewCosts(p, windows, cand, has, fit, d, anchor_sums, costs, conventional);

@@ -143,26 +143,120 @@ TEST(SynergisticOptimization, ProfileFindsTheTrueDepthTwoStepsAway) {
   EXPECT_GT(std::fabs(near_end.depth - 4.0f), 1e-3f);
 }
 
+// The objective of every solution the optimization compared, and the index
+// of the least (the first of equals).
+struct Competition {
+  float objective[kMaxSamplingSolutions + 1];
+  uint32_t seed[kMaxSamplingSolutions + 1];
+  int first = 0, last = 0, least = 0;
+};
+
+Competition Compete(OffsetScene& scene, const SynergyParams& sp, uint32_t in_use) {
+  Competition c;
+  ProfileScorer scorer;
+  EXPECT_TRUE(scorer.Prepare(scene.s.params, OffsetScene::kCol, OffsetScene::kRow, scene.centre,
+                             scene.clusters, sp));
+  const uint32_t pixel =
+      static_cast<uint32_t>(scene.s.params.state.Index(OffsetScene::kCol, OffsetScene::kRow));
+  c.first = sp.local_search ? 0 : 1;
+  c.last = sp.solutions;
+  for (int k = c.first; k <= c.last; ++k) {
+    c.seed[k] = CompetingSolution(scene.s.params, 0, pixel, sp, scene.clusters.count, in_use, k);
+    float profile[kWindowLanes];
+    scorer.Profile(scene.s.params, scene.anchors, scene.clusters, scene.d, sp, pixel, c.seed[k],
+                   profile);
+    c.objective[k] = ProfileObjective(profile, scorer.mu, sp);
+    if (k == c.first || c.objective[k] < c.objective[c.least]) c.least = k;
+  }
+  return c;
+}
+
 TEST(SynergisticOptimization, TheDrawnSolutionOfLeastObjectiveReplacesTheOneInUse) {
   OffsetScene scene;
+  // With eq. 9 the solutions' objectives differ, and the least one is kept.
+  const Competition c = Compete(scene, DefaultSynergyParams(), 7u);
   uint32_t solution = 7u;
   PlaneHypothesis candidate;
-  // With an objective of 0 for every profile the first drawn solution wins.
-  scene.Optimize(Params(0.0f, false), &solution, &candidate);
-  const uint32_t first = DrawnSamplingSolution(
-      scene.s.params, 0,
-      static_cast<uint32_t>(scene.s.params.state.Index(OffsetScene::kCol, OffsetScene::kRow)), 1);
-  EXPECT_EQ(solution, first);
-  // With eq. 9 another one does (J = 6 draws).
-  solution = 7u;
   scene.Optimize(DefaultSynergyParams(), &solution, &candidate);
-  EXPECT_NE(solution, 7u);
-  EXPECT_NE(solution, first);
+  EXPECT_EQ(solution, c.seed[c.least]);
+  for (int k = c.first; k <= c.last; ++k) EXPECT_LE(c.objective[c.least], c.objective[k]);
+  std::set<float> distinct(c.objective + c.first, c.objective + c.last + 1);
+  EXPECT_GT(distinct.size(), 1u);
+  // With an objective of 0 for every profile the first drawn solution wins.
+  solution = 7u;
+  scene.Optimize(Params(0.0f, false), &solution, &candidate);
+  EXPECT_EQ(solution, c.seed[1]);
   // A pixel without a selected view keeps its solution.
   scene.s.state_mask[scene.s.params.state.Index(OffsetScene::kCol, OffsetScene::kRow)] = 0u;
   solution = 7u;
   EXPECT_FALSE(scene.Optimize(DefaultSynergyParams(), &solution, &candidate));
   EXPECT_EQ(solution, 7u);
+}
+
+// Local search: a perturbation re-samples exactly one lane in use, and the
+// lanes it leaves alone keep their samples.
+TEST(SynergisticOptimization, APerturbationResamplesOneLane) {
+  OffsetScene scene;
+  ASSERT_EQ(scene.clusters.count, 8);
+  const uint64_t key = LayoutKey(scene.s.params, 123u);
+  const uint32_t in_use = 0x12345678u;
+  LaneSamples before;
+  RandomClusterSamples(scene.anchors, scene.clusters, 5, 200, 150, in_use, &before, key);
+  for (int j = 1; j <= 6; ++j) {
+    const uint32_t next =
+        PerturbedSamplingSolution(scene.s.params, 1, 123u, j, scene.clusters.count, in_use);
+    int changed_lanes = 0, moved_lanes = 0;
+    LaneSamples after;
+    RandomClusterSamples(scene.anchors, scene.clusters, 5, 200, 150, next, &after, key);
+    for (int c = 0; c < scene.clusters.count; ++c) {
+      changed_lanes += LaneLayout(next, c) != LaneLayout(in_use, c) ? 1 : 0;
+      bool moved = false;
+      for (int t = 0; t < kClusterLaneSamples; ++t) {
+        moved = moved || after.x[t][c] != before.x[t][c] || after.y[t][c] != before.y[t][c];
+      }
+      moved_lanes += moved ? 1 : 0;
+      if (LaneLayout(next, c) == LaneLayout(in_use, c)) EXPECT_FALSE(moved) << "lane " << c;
+    }
+    EXPECT_EQ(changed_lanes, 1) << "perturbation " << j;
+    EXPECT_LE(moved_lanes, 1);
+  }
+  // Only the lanes in use are perturbed.
+  for (int j = 1; j <= 20; ++j) {
+    const uint32_t next = PerturbedSamplingSolution(scene.s.params, 1, 123u, j, 2, in_use);
+    EXPECT_EQ(next >> 8, in_use >> 8);
+  }
+}
+
+// Local search keeps the solution in use unless a perturbation of it has a
+// lower objective, and it then takes the least one.
+TEST(SynergisticOptimization, LocalSearchKeepsTheLeastObjectiveAmongTheOneInUseAndItsNeighbours) {
+  OffsetScene scene;
+  SynergyParams sp = DefaultSynergyParams();
+  sp.local_search = true;
+  uint32_t solution = 0x0BADCAFEu;
+  int moves = 0;
+  for (int round = 0; round < 3; ++round) {
+    const Competition c = Compete(scene, sp, solution);
+    PlaneHypothesis candidate;
+    const uint32_t in_use = solution;
+    scene.Optimize(sp, &solution, &candidate);
+    EXPECT_EQ(solution, c.seed[c.least]);
+    EXPECT_LE(c.objective[c.least], c.objective[0]);
+    if (solution != in_use) EXPECT_LT(c.objective[c.least], c.objective[0]);
+    moves += solution != in_use ? 1 : 0;
+  }
+  EXPECT_GT(moves, 0);  // the search does move on this scene
+  // Ties keep the solution in use.
+  solution = 0x0BADCAFEu;
+  PlaneHypothesis candidate;
+  scene.Optimize(
+      [] {
+        SynergyParams flat = Params(0.0f, false);
+        flat.local_search = true;
+        return flat;
+      }(),
+      &solution, &candidate);
+  EXPECT_EQ(solution, 0x0BADCAFEu);
 }
 
 }  // namespace

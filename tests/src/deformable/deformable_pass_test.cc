@@ -308,6 +308,7 @@ TEST(DeformablePass, SynergisticOptimizationOffIsClusteringAlone) {
   DeformableSettings settings;
   settings.anchors = core::DefaultAnchorParams(
       0, clustering.params.depth_max - clustering.params.depth_min, msp.anchor_max_distance);
+  settings.anchors.rays_per_sector = core::kMaxRaysPerSector;  // the quadrupled anchors
   settings.anchors.max_anchors = core::kMaxKeptAnchors;
   settings.cost = core::DefaultDeformableParams();
   settings.cost.disassemble_clustering = true;
@@ -321,13 +322,14 @@ TEST(DeformablePass, SynergisticOptimizationOffIsClusteringAlone) {
   EXPECT_NE(on.state.depth, off.state.depth);
 }
 
-// Each ablation of the optimization (w/o Var., w/o Cst., mu = 3) and the
-// optimization without clustering change the output.
+// Each ablation of the optimization (w/o Var., w/o Cst., mu = 3), the
+// optimization without clustering and the other sampling search change the output.
 TEST(DeformablePass, EverySynergySwitchChangesTheOutput) {
   Scene reference;
   RunFromRandomPlanes(MspStereoOptions(), &reference);
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < 5; ++k) {
     MspStereoOptions msp;
+    if (k == 4) msp.sampling_local_search = !msp.sampling_local_search;
     if (k == 0) msp.variance_weight = 0.0;
     if (k == 1) msp.profile_cost_term = false;
     if (k == 2) msp.disparity_samples = 3;

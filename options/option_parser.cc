@@ -259,6 +259,10 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
       "After each pass, fit a plane to the matched edge pixels on and around each colour "
       "segment (RANSAC) and offer it to the segment's pixels: textureless pixels take "
       "it unless the views reject it, textured ones only when it matches better.");
+  MSP_ADD_OPTION(t, *m, segment_plane_confirmation,
+                 "In geometric passes, offer a segment's plane only when the other views' depth "
+                 "maps confirm it (reprojection within 1 px) on at least as many of the segment's "
+                 "pixels as the planes they hold.");
   MSP_ADD_OPTION(t, *m, filter_textureless_by_geometry,
                  "With geometric consistency, the final filter counts a weakly textured pixel's "
                  "sources by triangulation angle and reprojection alone: its NCC is noise. false "

@@ -136,6 +136,9 @@ struct MspStereoOptions {
   // After each pass, matched edge pixels give each colour segment a plane that its textureless
   // pixels take (docs/method.md section 2.10); false = no segment planes.
   bool segment_planes = true;
+  // In geometric passes a segment's plane is offered only when the other views' depth maps
+  // confirm it at least as often as the planes its pixels hold (docs/method.md section 2.10).
+  bool segment_plane_confirmation = false;
   // The final filter judges a weakly textured pixel by geometric agreement alone (no NCC test).
   bool filter_textureless_by_geometry = true;
   // Cost (1 - NCC, in [0, 2]) above which the lowest cost-curve minimum is unreliable (APD: 0.5).

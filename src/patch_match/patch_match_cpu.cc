@@ -440,7 +440,8 @@ class CpuRunner {
     if (state->segments.empty()) {
       state->segments = SegmentPlaneLabels(level_->color.at(problem.ref), segmenter_);
     }
-    const SegmentPlanesReport r = ApplySegmentPlanes(params, state->segments, threads_);
+    const SegmentPlanesReport r = ApplySegmentPlanes(
+        params, state->segments, threads_, msp_.segment_plane_confirmation);
     Logf(kLogDetail,
          "  segment planes: %d of %d segments, %.1f%% of pixels offered, %.1f%% took; %.2f s\n",
          r.num_planes, r.num_segments,

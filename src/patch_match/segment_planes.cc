@@ -8,6 +8,7 @@
 #include "base/parallel_for.h"
 #include "core/math/plane.h"
 #include "core/math/rng.h"
+#include "core/patch_match/geometric_cost.h"
 #include "core/patch_match/local_refine.h"
 #include "core/patch_match/segment_plane.h"
 #include "prior/multiscale_segmentation.h"
@@ -45,6 +46,11 @@ constexpr float kMinSpreadShare = 0.2f;
 // A textureless pixel takes its segment's plane unless that costs this much
 // more than its own (costs of noise-level windows differ by about this much).
 constexpr float kTexturelessMargin = 0.1f;
+// Confirmation by the other views: every 4th pixel of every 4th row is
+// enough to count a segment's agreement; a source confirms a depth that it
+// brings back within 1 px (the final filter's geometric tolerance).
+constexpr int kConfirmationStride = 4;
+constexpr float kConfirmationError = 1.0f;
 
 struct SupportPoint {
   int col, row;
@@ -213,8 +219,57 @@ std::vector<int32_t> SegmentPlaneLabels(const DenseMap& color, Segmenter segment
       segmenter);
 }
 
+void ConfirmSegmentPlanes(const core::PassParams& params, const std::vector<int32_t>& labels,
+                          int num_threads, std::vector<SegmentPlane>* planes) {
+  bool any_depth = false;
+  for (int j = 0; j < params.num_src; ++j) any_depth = any_depth || params.src[j].depth.data;
+  if (!any_depth) return;
+  const core::PixelStateView& s = params.state;
+  const auto confirmed = [&](int col, int row, float depth) {
+    if (!(depth > 0.0f)) return false;
+    for (int j = 0; j < params.num_src; ++j) {
+      const core::SourceView& src = params.src[j];
+      if (src.depth.data == nullptr) continue;
+      if (core::ComposedReprojectionError(src.rel, src.camera, src.depth, col, row, depth,
+                                          2.0f * kConfirmationError) <= kConfirmationError) {
+        return true;
+      }
+    }
+    return false;
+  };
+  // Per sampled row: the segments' counts of pixels confirming their
+  // segment's plane and their own.
+  const size_t num_ids = planes->size();
+  const int num_rows = (s.height + kConfirmationStride - 1) / kConfirmationStride;
+  std::vector<std::vector<int>> by_plane(num_rows), by_own(num_rows);
+  ParallelFor(0, num_rows, num_threads, [&](int r) {
+    const int row = r * kConfirmationStride;
+    by_plane[r].assign(num_ids, 0);
+    by_own[r].assign(num_ids, 0);
+    for (int col = 0; col < s.width; col += kConfirmationStride) {
+      const int i = s.Index(col, row);
+      const SegmentPlane& plane = (*planes)[labels[i]];
+      if (!plane.accepted || core::IsUnlit(params, i)) continue;
+      const core::PlaneHypothesis candidate =
+          core::HypothesisOnPlane(params.ref_camera, col, row, plane.normal, plane.point);
+      by_plane[r][labels[i]] += confirmed(col, row, candidate.depth) ? 1 : 0;
+      by_own[r][labels[i]] += confirmed(col, row, s.depth[i]) ? 1 : 0;
+    }
+  });
+  for (size_t id = 0; id < num_ids; ++id) {
+    long plane_votes = 0, own_votes = 0;
+    for (int r = 0; r < num_rows; ++r) {
+      plane_votes += by_plane[r][id];
+      own_votes += by_own[r][id];
+    }
+    SegmentPlane& plane = (*planes)[id];
+    if (plane.accepted && (plane_votes == 0 || plane_votes < own_votes)) plane.accepted = false;
+  }
+}
+
 SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
-                                       const std::vector<int32_t>& labels, int num_threads) {
+                                       const std::vector<int32_t>& labels, int num_threads,
+                                       bool confirm) {
   const core::PixelStateView& s = params.state;
   const int n = s.width * s.height;
   if (labels.size() != static_cast<size_t>(n)) {
@@ -232,7 +287,8 @@ SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
     }
   });
   const uint64_t key = core::RngKey(params.seed, params.image_id, params.pass_id, 0x5E6u, 0u);
-  const std::vector<SegmentPlane> planes = FitSegmentPlanes(params, labels, reliable, key);
+  std::vector<SegmentPlane> planes = FitSegmentPlanes(params, labels, reliable, key);
+  if (confirm) ConfirmSegmentPlanes(params, labels, num_threads, &planes);
   SegmentPlanesReport report;
   report.num_segments = static_cast<int>(planes.size()) - 1;
   for (const SegmentPlane& plane : planes) report.num_planes += plane.accepted ? 1 : 0;

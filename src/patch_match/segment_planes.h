@@ -45,9 +45,21 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
 // pass of a round, so the runner keeps them with the image's state.
 std::vector<int32_t> SegmentPlaneLabels(const DenseMap& color, Segmenter segmenter);
 
+// Confirmation by the other views (geometric passes): on every 4th pixel of
+// every 4th row of each segment with an accepted plane, the plane and the
+// plane the pixel holds are reprojected through each source's depth map
+// (core::ComposedReprojectionError); a pixel confirms a plane when some
+// source brings it back within 1 px. A plane that fewer sampled pixels
+// confirm than confirm their own planes is no longer accepted: the views say
+// the segment's pixels are better where they are. Without source depth maps
+// (photometric passes) nothing changes.
+void ConfirmSegmentPlanes(const core::PassParams& params, const std::vector<int32_t>& labels,
+                          int num_threads, std::vector<SegmentPlane>* planes);
+
 // The whole step on the state of `params`: fits the planes of the segments
-// `labels` (SegmentPlaneLabels), offers them.
+// `labels` (SegmentPlaneLabels), confirms them when `confirm`, offers them.
 SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
-                                       const std::vector<int32_t>& labels, int num_threads);
+                                       const std::vector<int32_t>& labels, int num_threads,
+                                       bool confirm = false);
 
 }  // namespace msp

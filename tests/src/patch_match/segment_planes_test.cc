@@ -74,6 +74,55 @@ TEST(SegmentPlanes, FitsThePlaneOfAnLShapedSupportDespiteOutliers) {
   EXPECT_GT(std::fabs(core::Dot(h.normal, kTiltedNormal)), std::cos(0.5f * 3.14159265f / 180));
 }
 
+// The depth map the first source sees of the plane `normal` . X + dist = 0
+// through `point` (reference camera frame).
+std::vector<float> SourceDepthOfPlane(const core::PassParams& p, core::Vec3 normal,
+                                      core::Vec3 point) {
+  const core::SourceView& src = p.src[0];
+  const core::Vec3 n_src = core::Mul(src.rel.R, normal);
+  const core::Vec3 point_src = core::Mul(src.rel.R, point) + src.rel.t;
+  std::vector<float> depth(static_cast<size_t>(src.camera.width) * src.camera.height);
+  for (int row = 0; row < src.camera.height; ++row) {
+    for (int col = 0; col < src.camera.width; ++col) {
+      depth[row * src.camera.width + col] =
+          core::HypothesisOnPlane(src.camera, col, row, n_src, point_src).depth;
+    }
+  }
+  return depth;
+}
+
+// The segment's plane (the tilted one, fitted from an L of support) is
+// offered only when the source's depth map confirms it at least as often as
+// the planes the pixels hold (z = 2 everywhere but the support).
+TEST(SegmentPlanes, ConfirmationKeepsAPlaneTheViewsSeeAndDropsOneTheyContradict) {
+  Fixture f = MakeFixture(LShape, 0);
+  core::PassParams& p = f.scene.params;
+  const std::vector<SegmentPlane> fitted = FitSegmentPlanes(p, f.labels, f.reliable, 7u);
+  ASSERT_TRUE(fitted[1].accepted);
+  const core::ImageView no_depth = p.src[0].depth;
+  // Photometric pass: no source depth, nothing to confirm with.
+  std::vector<SegmentPlane> planes = fitted;
+  ConfirmSegmentPlanes(p, f.labels, 2, &planes);
+  EXPECT_TRUE(planes[1].accepted);
+  // The source sees the tilted plane: confirmed.
+  const std::vector<float> tilted =
+      SourceDepthOfPlane(p, kTiltedNormal, core::Vec3{0.0f, 0.0f, 2.0f});
+  p.src[0].depth = core::ImageView{tilted.data(), p.src[0].camera.width, p.src[0].camera.height,
+                                   p.src[0].camera.width};
+  planes = fitted;
+  ConfirmSegmentPlanes(p, f.labels, 2, &planes);
+  EXPECT_TRUE(planes[1].accepted);
+  // The source sees the pixels' own plane z = 2: the segment's plane is dropped.
+  const std::vector<float> fronto =
+      SourceDepthOfPlane(p, core::Vec3{0.0f, 0.0f, -1.0f}, core::Vec3{0.0f, 0.0f, 2.0f});
+  p.src[0].depth = core::ImageView{fronto.data(), p.src[0].camera.width, p.src[0].camera.height,
+                                   p.src[0].camera.width};
+  planes = fitted;
+  ConfirmSegmentPlanes(p, f.labels, 2, &planes);
+  EXPECT_FALSE(planes[1].accepted);
+  p.src[0].depth = no_depth;
+}
+
 TEST(SegmentPlanes, RejectsSupportAlongOneLine) {
   // Every plane through the band nearly fits it: no plane for the segment.
   const Fixture f = MakeFixture(TwoRows, 0);

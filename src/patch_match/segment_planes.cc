@@ -51,6 +51,11 @@ constexpr float kTexturelessMargin = 0.1f;
 // brings back within 1 px (the final filter's geometric tolerance).
 constexpr int kConfirmationStride = 4;
 constexpr float kConfirmationError = 1.0f;
+// The pixels' own planes come out of geometric passes that reward agreeing
+// with the views, so they are confirmed more often even where they are
+// noise: a segment plane is dropped only when the views confirm it on
+// fewer than this share of the pixels that confirm their own planes.
+constexpr double kMinConfirmedShare = 0.5;
 
 struct SupportPoint {
   int col, row;
@@ -263,7 +268,9 @@ void ConfirmSegmentPlanes(const core::PassParams& params, const std::vector<int3
       own_votes += by_own[r][id];
     }
     SegmentPlane& plane = (*planes)[id];
-    if (plane.accepted && (plane_votes == 0 || plane_votes < own_votes)) plane.accepted = false;
+    if (plane.accepted && (plane_votes == 0 || plane_votes < kMinConfirmedShare * own_votes)) {
+      plane.accepted = false;
+    }
   }
 }
 

@@ -125,7 +125,7 @@ e = json.load(open(sys.argv[1]))
 label, wall, user, first_user = sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), float(sys.argv[5])
 pct = lambda v: "%.2f" % (100.0 * v)
 fused = []
-for t in e["fused"]["thresholds"]:  # 0.5 % then 2 % of the extent
+for t in e["fused"]["thresholds"][:2]:  # 0.5 % then 2 % of the extent; the absolute ones follow
     fused += [pct(t["f1_multi"]), pct(t["completeness_multi"]), pct(t["accuracy"])]
 a = e["average"]
 region = lambda r: "%s (%s)" % (pct(a[r]["complete_1"]), pct(a[r]["valid_fraction"]))

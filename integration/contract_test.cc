@@ -88,9 +88,15 @@ TEST_F(ContractTest, ExactMapsFuseOntoTheSurface) {
   EXPECT_EQ(r.num_missing_maps, 0);
   EXPECT_DOUBLE_EQ(r.average.all.complete[0], 1.0);
   EXPECT_DOUBLE_EQ(r.average.all.median_normal_error_deg, 0.0);
-  ASSERT_EQ(r.cloud.thresholds.size(), 2u);
+  // 0.5 % and 2 % of the extent, then 2 cm and 5 cm.
+  ASSERT_EQ(r.cloud.thresholds.size(), 4u);
   const eval::CloudThresholdMetrics& fine = r.cloud.thresholds[0];
   const eval::CloudThresholdMetrics& coarse = r.cloud.thresholds[1];
+  EXPECT_TRUE(r.cloud.thresholds[2].absolute);
+  EXPECT_DOUBLE_EQ(r.cloud.thresholds[2].metres, 0.02);
+  EXPECT_GE(r.cloud.thresholds[2].accuracy, kMinAccuracyExact);
+  // Rendered depth has a value at every pixel: every fused point is judged.
+  EXPECT_EQ(r.cloud.num_judged, r.cloud.num_points);
   RecordProperty("fused_points", r.cloud.num_points);
   RecordProperty("f1_multi_fine_permille", static_cast<int>(1000 * fine.f1_multi));
   RecordProperty("f1_multi_coarse_permille", static_cast<int>(1000 * coarse.f1_multi));

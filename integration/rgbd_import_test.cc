@@ -26,6 +26,7 @@
 #include "colmap_ext/sparse_model.h"
 #include "integration/scene/generate.h"
 #include "integration/scene/scene.h"
+#include "tests/support/commands.h"
 #include "tests/support/files.h"
 #include "tests/support/temp_dir.h"
 #include "tools/ply_points.h"
@@ -34,6 +35,8 @@ namespace msp {
 namespace {
 
 namespace fs = std::filesystem;
+using test::RealColmap;
+using test::RunLogged;
 
 const std::string kBin = MSP_BIN_DIR;
 // Depth PNG units per metre: TUM RGB-D's, not the importer's usual 1000, so
@@ -60,15 +63,6 @@ constexpr double kMaxMedianNormalErrorDeg = 2.0;
 constexpr int kHoleRow = 10;
 constexpr int kHoleCol = 20;
 constexpr int kNumViews = 4;
-
-std::string RealColmap() {
-  const char* env = std::getenv("MSP_REAL_COLMAP");
-  return env != nullptr ? env : "/usr/bin/colmap";
-}
-
-int RunLogged(const std::string& command, const std::string& log) {
-  return std::system((command + " > " + log + " 2>&1").c_str());
-}
 
 std::string Stem(const std::string& name) { return fs::path(name).stem().string(); }
 

@@ -74,23 +74,19 @@ ablation_init "$top/office"
 trap 'rm -rf "$scratch" "$top"' EXIT
 require_known_options ${common[@]+"${common[@]}"} --MspStereo.write_previews 1
 for plan in "${plans[@]}"; do
-  rest=${plan#*|}
-  read -r -a options <<< "${rest#*|}"
+  plan_fields "$plan"
   require_known_options ${options[@]+"${options[@]}"}
 done
 
 echo
 echo "msp_stereo options of every row: ${common[*]+${common[*]}}"
 echo
-printf '| row | wall s | s / frame | maps within 5 %% / 1 %% | valid %% | textureless within 5 %% | fused points (judged) | acc. / comp. / F1 at 5 cm | acc. / comp. / F1 at 2 cm |\n'
-printf '|---|---|---|---|---|---|---|---|---|\n'
+printf '| row | wall s | CPU-s | wall s / frame | maps within 5 %% / 1 %% | valid %% | textureless within 5 %% | fused points (judged) | acc. / comp. / F1 at 5 cm | F1 at 5 cm, >= 3 views | acc. / comp. / F1 at 2 cm |\n'
+printf '|---|---|---|---|---|---|---|---|---|---|---|\n'
 n=0
 for plan in "${plans[@]}"; do
   n=$((n + 1))
-  id=${plan%%|*}
-  rest=${plan#*|}
-  label=${rest%%|*}
-  read -r -a options <<< "${rest#*|}"
+  plan_fields "$plan"
   echo "row $n/${#plans[@]} ($id): msp_stereo ${common[*]+${common[*]}} ${options[*]+${options[*]}}" >&2
   run_row ${common[@]+"${common[@]}"} ${options[@]+"${options[@]}"} --MspStereo.write_previews 1
   if [ -n "$keep" ]; then
@@ -98,10 +94,10 @@ for plan in "${plans[@]}"; do
     cp "$scratch/ws/fused.ply" "$scratch/eval.json" "$scratch/stereo.log" "$keep/$id/"
   fi
   read -r wall user < "$scratch/time"
-  /usr/bin/python3 - "$scratch/eval.json" "$label" "$wall" "$num_frames" <<'PY'
+  /usr/bin/python3 - "$scratch/eval.json" "$label" "$wall" "$user" "$num_frames" <<'PY'
 import json, sys
 e = json.load(open(sys.argv[1]))
-label, wall, frames = sys.argv[2], float(sys.argv[3]), int(sys.argv[4])
+label, wall, user, frames = sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), int(sys.argv[5])
 pct = lambda v: "%.1f" % (100.0 * v)
 a = e["average"]
 f = e["fused"]
@@ -109,19 +105,20 @@ absolute = {round(t["metres"], 4): t for t in f["thresholds"] if t["absolute"]}
 cloud = lambda t: "%s / %s / %s" % (pct(t["accuracy"]), pct(t["completeness"]), pct(t["f1"]))
 tl = a["textureless"]
 print("| " + " | ".join([
-    label, "%.0f" % wall, "%.1f" % (wall / frames),
+    label, "%.0f" % wall, "%.0f" % user, "%.1f" % (wall / frames),
     "%s / %s" % (pct(a["all"]["complete_2"]), pct(a["all"]["complete_1"])),
     pct(a["all"]["valid_fraction"]),
     pct(tl["complete_2"]) if tl is not None else "-",
     "%d (%d)" % (f["num_points"], f["num_judged"]),
-    cloud(absolute[0.05]), cloud(absolute[0.02])]) + " |")
+    cloud(absolute[0.05]), pct(absolute[0.05]["f1_multi"]), cloud(absolute[0.02])]) + " |")
 PY
 done
 echo
 echo "Maps: mean over frames of the share of measured pixels within 5 % / 1 % relative depth error"
 echo "(pixels without a sensor measurement count neither way); valid = measured pixels with a depth."
 echo "Fused: accuracy over the points some frame measured, completeness over the sensor's surface"
-echo "sample ($num_frames frames, 5 mm voxels), F1 of both."
+echo "sample ($num_frames frames, 5 mm voxels), F1 of both; >= 3 views: completeness over the samples"
+echo "three or more frames measured, what COLMAP's default fusion can reach."
 
 if [ "$bundled" = 1 ]; then
   echo "bundled scene at 640x480 (default options), same sitting" >&2
@@ -131,5 +128,6 @@ if [ "$bundled" = 1 ]; then
   read -r wall user < "$top/bundled.time"
   images=$(wc -l < "$top/bundled/ground_truth/images.txt")
   echo
-  echo "Bundled scene, same sitting: $images images at 640x480, ${wall} s wall, $(/usr/bin/python3 -c "print('%.1f' % ($wall / $images))") s per image"
+  per_image=$(/usr/bin/python3 -c "print('%.1f' % ($wall / $images))")
+  echo "Bundled scene, same sitting: $images images at 640x480, $wall s wall ($per_image s per image), $user CPU-s"
 fi

@@ -88,10 +88,7 @@ first_user=""
 n=0
 for plan in "${plans[@]}"; do
   n=$((n + 1))
-  id=${plan%%|*}
-  rest=${plan#*|}
-  label=${rest%%|*}
-  read -r -a options <<< "${rest#*|}"
+  plan_fields "$plan"
   echo "row $n/${#plans[@]} ($id): msp_stereo ${common[*]+${common[*]}} ${options[*]+${options[*]}}" >&2
   run_row ${common[@]+"${common[@]}"} ${options[@]+"${options[@]}"}
   read -r wall user < "$scratch/time"

@@ -30,6 +30,15 @@ rows=(
   "mu3|MSP-MVS, mu = 3|--MspStereo.disparity_samples 3"
 )
 
+# plan_fields ROW: sets `id`, `label` and the array `options` from an
+# "id|label|options" row.
+plan_fields() {
+  id=${1%%|*}
+  local rest=${1#*|}
+  label=${rest%%|*}
+  read -r -a options <<< "${rest#*|}"
+}
+
 # table3_row ID: the row's "id|label|options", or nothing.
 table3_row() {
   local row

@@ -34,7 +34,7 @@ row() {
   python3 - "$1" "$3" "$wall" "$user" "$scratch/eval.json" <<'PY'
 import json, sys
 label, images, wall, user, path = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4]), sys.argv[5]
-t = json.load(open(path))["fused"]["thresholds"]
+t = [x for x in json.load(open(path))["fused"]["thresholds"] if not x["absolute"]]
 f1 = " / ".join("%.2f" % (100 * x["f1_multi"]) for x in t)
 print("| %s | %.1f | %.1f | %s |" % (label, wall / images, user / images, f1))
 PY

@@ -21,31 +21,8 @@ set -euo pipefail
 # shellcheck source=bench/lib/run_row.sh
 source "$(dirname "$0")/lib/run_row.sh"
 
-# The parts of the method, each switched off.
-NO_PRIOR="--MspStereo.segmentation_prior false"
-NO_AGR="--MspStereo.edge_aggregation false"
-NO_REF="--MspStereo.edge_refinement false"
-NO_GEO="--MspStereo.geometry_layers false"
-NO_EQD="--MspStereo.equidistribution false"
-NO_CLU="--MspStereo.disassemble_clustering false"
-NO_SYN="--MspStereo.synergistic_optimization false"
-
-# id | label | options. From the baseline to `full` each row adds one part to
-# the row above (segment planes, our own step, stay on throughout); the last
-# three take one piece out of the full method's 3D optimization.
-rows=(
-  "baseline|APD-MVS baseline|$NO_PRIOR $NO_EQD $NO_CLU $NO_SYN"
-  "prior|+ prior: colour layers, union of their edges|$NO_AGR $NO_REF $NO_GEO $NO_EQD $NO_CLU $NO_SYN"
-  "aggregation|+ edge aggregation (eqs. 4-5)|$NO_REF $NO_GEO $NO_EQD $NO_CLU $NO_SYN"
-  "refinement|+ edge refinement (CRF, eq. 6)|$NO_GEO $NO_EQD $NO_CLU $NO_SYN"
-  "geometry|+ geometry layers|$NO_EQD $NO_CLU $NO_SYN"
-  "equidistribution|+ adaptive equidistribution (eq. 7)|$NO_CLU $NO_SYN"
-  "clustering|+ disassemble-clustering|$NO_SYN"
-  "full|+ 3D optimization (eqs. 8-9) = MSP-MVS|"
-  "novar|MSP-MVS w/o Var. (omega = 0)|--MspStereo.variance_weight 0"
-  "nocost|MSP-MVS w/o Cst.|--MspStereo.profile_cost_term false"
-  "mu3|MSP-MVS, mu = 3|--MspStereo.disparity_samples 3"
-)
+# shellcheck source=bench/lib/table3_rows.sh
+source "$(dirname "$0")/lib/table3_rows.sh"
 
 selected=""
 drop_unknown=0
@@ -111,10 +88,7 @@ first_user=""
 n=0
 for plan in "${plans[@]}"; do
   n=$((n + 1))
-  id=${plan%%|*}
-  rest=${plan#*|}
-  label=${rest%%|*}
-  read -r -a options <<< "${rest#*|}"
+  plan_fields "$plan"
   echo "row $n/${#plans[@]} ($id): msp_stereo ${common[*]+${common[*]}} ${options[*]+${options[*]}}" >&2
   run_row ${common[@]+"${common[@]}"} ${options[@]+"${options[@]}"}
   read -r wall user < "$scratch/time"
@@ -125,7 +99,7 @@ e = json.load(open(sys.argv[1]))
 label, wall, user, first_user = sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), float(sys.argv[5])
 pct = lambda v: "%.2f" % (100.0 * v)
 fused = []
-for t in e["fused"]["thresholds"]:  # 0.5 % then 2 % of the extent
+for t in e["fused"]["thresholds"][:2]:  # 0.5 % then 2 % of the extent; the absolute ones follow
     fused += [pct(t["f1_multi"]), pct(t["completeness_multi"]), pct(t["accuracy"])]
 a = e["average"]
 region = lambda r: "%s (%s)" % (pct(a[r]["complete_1"]), pct(a[r]["valid_fraction"]))

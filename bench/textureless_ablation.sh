@@ -43,8 +43,9 @@ e = json.load(open(sys.argv[1]))
 name, wall, user = sys.argv[2], float(sys.argv[3]), float(sys.argv[4])
 f = e["fused"]
 t = e["average"]["textureless"]
-acc = " / ".join("%.1f" % (100 * x["accuracy"]) for x in f["thresholds"])
-f1 = " / ".join("%.1f" % (100 * x["f1_multi"]) for x in f["thresholds"])
+relative = [x for x in f["thresholds"] if not x["absolute"]]  # 0.5 % and 2 % of the extent
+acc = " / ".join("%.1f" % (100 * x["accuracy"]) for x in relative)
+f1 = " / ".join("%.1f" % (100 * x["f1_multi"]) for x in relative)
 print("| %s | %.0f | %.0f | %s | %s | %.1f / %.1f %% / %.1f deg |" % (
     name, wall, user, acc, f1, 100 * t["valid_fraction"], 100 * t["complete_1"],
     t["median_normal_error_deg"]))

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <fstream>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "colmap_ext/errors.h"
 #include "colmap_ext/file_util.h"
+#include "colmap_ext/png_header.h"
 #include "core/prior/prior_limits.h"
 #include "options/option_name.h"
 #include "options/stereo_options.h"
@@ -48,26 +48,15 @@ std::string NameList(const std::vector<std::string>& names) {
                    " (masks must be made from the undistorted images)");
 }
 
-uint32_t BigEndian32(const unsigned char* bytes) {
-  return (uint32_t{bytes[0]} << 24) | (uint32_t{bytes[1]} << 16) | (uint32_t{bytes[2]} << 8) |
-         uint32_t{bytes[3]};
-}
-
-// The size in the PNG header (IHDR, the first chunk) must be the image's
-// before the file is decoded: the decoder allocates what the header declares,
-// so a corrupt or foreign header could otherwise ask for gigabytes.
+// The size in the PNG header must be the image's before the file is decoded
+// (png_header.h).
 void CheckPngHeader(const std::string& path, const MaskImage& image) {
-  static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  unsigned char header[24] = {};
-  std::ifstream file(path, std::ios::binary);
-  file.read(reinterpret_cast<char*>(header), sizeof(header));
-  if (!file || !std::equal(kSignature, kSignature + 8, header) ||
-      !std::equal(header + 12, header + 16, "IHDR")) {
+  uint32_t width = 0, height = 0;
+  if (!ReadPngSize(path, &width, &height)) {
     throw InputError(path + ": cannot read mask layer: not a PNG file" + kLayoutHint);
   }
-  const uint32_t width = BigEndian32(header + 16);
-  const uint32_t height = BigEndian32(header + 20);
-  if (width != static_cast<uint32_t>(image.width) || height != static_cast<uint32_t>(image.height)) {
+  if (width != static_cast<uint32_t>(image.width) ||
+      height != static_cast<uint32_t>(image.height)) {
     ThrowSizeMismatch(path, width, height, image);
   }
 }

@@ -5,16 +5,20 @@
 //   maps: an 8x6 crop of an image's ground-truth depth and normal maps;
 //   patch-match.cfg: the workspace's, and __all__ / explicit-list variants;
 //   project ini: every option of msp_stereo at its default, in ini sections;
-//   mask layer: 16-bit region ids of the first image at 16x12, and an 8-bit one.
+//   mask layer: 16-bit region ids of the first image at 16x12, and an 8-bit one;
+//   RGB-D capture: the first image's K, camera-to-world pose and ground-truth
+//   depth at 16x12 in millimetres, as msp_import_rgbd reads them.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <iomanip>
 #include <iostream>
-#include <sstream>
-#include <string>
-#include <vector>
-
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "colmap_ext/dense_map_io.h"
 #include "colmap_ext/errors.h"
@@ -30,7 +34,8 @@ constexpr size_t kSeedImages = 3;
 constexpr size_t kSeedPoints = 4;
 constexpr int kMapCropWidth = 8;
 constexpr int kMapCropHeight = 6;
-constexpr int kMaskWidth = 16;  // the size mask_layer_fuzzer reads layers at
+// The size mask_layer_fuzzer reads layers at and rgbd_capture_fuzzer's depth.
+constexpr int kMaskWidth = 16;
 constexpr int kMaskHeight = 12;
 
 // The first images and points, with each kept point's observations in the
@@ -89,8 +94,8 @@ DenseMap Crop(const DenseMap& map) {
 void WriteMapSeeds(const std::string& workspace, const std::string& image_name,
                    const std::string& out) {
   for (const char* kind : {"depth", "normal"}) {
-    const std::string path = JoinPaths(
-        workspace, std::string("ground_truth/") + kind + "_maps/" + image_name + ".bin");
+    const std::string path =
+        JoinPaths(workspace, std::string("ground_truth/") + kind + "_maps/" + image_name + ".bin");
     WriteDenseMap(JoinPaths(out, std::string("dense_map_fuzzer/") + kind),
                   Crop(ReadDenseMap(path)));
   }
@@ -145,14 +150,13 @@ void WriteIniSeed(const std::string& out) {
   }
   // A COLMAP project.ini also holds other commands' sections.
   WriteFileAtomic(JoinPaths(out, "project_ini_fuzzer/project.ini"),
-                  top + "\n[SiftExtraction]\nmax_image_size=3200\n" +
-                      sections);
+                  top + "\n[SiftExtraction]\nmax_image_size=3200\n" + sections);
 }
 
 void WriteMaskSeeds(const std::string& workspace, const std::string& image_name,
                     const std::string& out) {
-  const cv::Mat image = cv::imread(JoinPaths(workspace, "images/" + image_name),
-                                   cv::IMREAD_GRAYSCALE);
+  const cv::Mat image =
+      cv::imread(JoinPaths(workspace, "images/" + image_name), cv::IMREAD_GRAYSCALE);
   if (image.empty()) throw InputError("cannot read image " + image_name + " of " + workspace);
   cv::Mat small;
   cv::resize(image, small, cv::Size(kMaskWidth, kMaskHeight), 0, 0, cv::INTER_AREA);
@@ -165,6 +169,45 @@ void WriteMaskSeeds(const std::string& workspace, const std::string& image_name,
                                   std::pair<std::string, cv::Mat>{"grey8.png", small}}) {
     if (!cv::imwrite(JoinPaths(dir, name), mat)) throw InputError("cannot write " + name);
   }
+}
+
+// K.txt, poses.txt and the depth PNG of the first image, joined at the part
+// separator; and the same with the depth as an 8-bit PNG, which is refused.
+void WriteRgbdSeeds(const std::string& workspace, const SparseModel& model,
+                    const std::string& out) {
+  constexpr double kMillimetresPerMetre = 1000.0;
+  const SparseImage& image = model.images[0];
+  const SparseCamera& camera = model.cameras[model.FindCamera(image.camera_id)];
+  const std::vector<double>& k = camera.params;  // PINHOLE fx fy cx cy
+  std::ostringstream intrinsics, pose;
+  intrinsics << std::setprecision(17) << k[0] << " 0 " << k[2] << "\n0 " << k[1] << " " << k[3]
+             << "\n0 0 1\n";
+  const Eigen::Matrix3d R =
+      Eigen::Quaterniond(image.qvec[0], image.qvec[1], image.qvec[2], image.qvec[3])
+          .toRotationMatrix();
+  const Eigen::Vector3d center = -R.transpose() * Eigen::Vector3d(image.tvec);
+  pose << std::setprecision(17);
+  for (int r = 0; r < 3; ++r) {
+    pose << R(0, r) << " " << R(1, r) << " " << R(2, r) << " " << center[r] << " ";
+  }
+  pose << "0 0 0 1\n";
+  const DenseMap depth =
+      ReadDenseMap(JoinPaths(workspace, "ground_truth/depth_maps/" + image.name + ".bin"));
+  cv::Mat metres(depth.height, depth.width, CV_32F, const_cast<float*>(depth.data.data()));
+  cv::Mat small, millimetres;
+  cv::resize(metres, small, cv::Size(kMaskWidth, kMaskHeight), 0, 0, cv::INTER_NEAREST);
+  small.convertTo(millimetres, CV_16U, kMillimetresPerMetre);
+  std::vector<uchar> png;
+  if (!cv::imencode(".png", millimetres, png)) throw InputError("cannot encode the depth seed");
+  std::vector<uchar> png8;
+  cv::Mat eight_bit;
+  millimetres.convertTo(eight_bit, CV_8U, 1.0 / kMillimetresPerMetre);
+  if (!cv::imencode(".png", eight_bit, png8)) throw InputError("cannot encode the depth seed");
+  const std::string text =
+      intrinsics.str() + fuzz::kPartSeparator + pose.str() + fuzz::kPartSeparator;
+  const std::string dir = JoinPaths(out, "rgbd_capture_fuzzer");
+  WriteFileAtomic(JoinPaths(dir, "depth16"), text + std::string(png.begin(), png.end()));
+  WriteFileAtomic(JoinPaths(dir, "depth8"), text + std::string(png8.begin(), png8.end()));
 }
 
 int Run(int argc, char** argv) {
@@ -182,6 +225,7 @@ int Run(int argc, char** argv) {
   WriteConfigSeeds(workspace, model, out);
   WriteIniSeed(out);
   WriteMaskSeeds(workspace, first_image, out);
+  WriteRgbdSeeds(workspace, model, out);
   return 0;
 }
 

@@ -23,13 +23,17 @@ grep -q '"num_missing_maps": 0' "$ws/eval.json"
 if "$bin_dir/msp_evaluate" --workspace "$ws/nonexistent" 2> "$ws/err.txt"; then exit 1; fi
 grep -q '^ERROR: ' "$ws/err.txt"
 # Every tool lists its options with their defaults, and stops on an unknown one.
-for tool in msp_make_scene msp_write_gt_maps msp_evaluate; do
+for tool in msp_make_scene msp_write_gt_maps msp_evaluate msp_import_rgbd; do
   "$bin_dir/$tool" --help > "$ws/help.txt"
   grep -q -- '--help' "$ws/help.txt"
   grep -q '(=' "$ws/help.txt"
   if "$bin_dir/$tool" --no_such_option 1 2> "$ws/err.txt"; then exit 1; fi
   grep -q "^ERROR: unknown option \`--no_such_option\`" "$ws/err.txt"
 done
+# msp_import_rgbd: one ERROR line for a missing depth scale, before anything is written.
+if "$bin_dir/msp_import_rgbd" --input "$ws" --output "$ws/rgbd_ws" 2> "$ws/err.txt"; then exit 1; fi
+grep -q "^ERROR: --depth_units_per_metre is required" "$ws/err.txt"
+test ! -e "$ws/rgbd_ws"
 # msp_convert_masks: help, and one ERROR line for an unknown or a missing option.
 "$bin_dir/msp_convert_masks" --help > "$ws/help.txt"
 grep -q -- '--input_path' "$ws/help.txt"

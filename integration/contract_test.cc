@@ -14,6 +14,7 @@
 
 #include "integration/scene/generate.h"
 #include "integration/scene/gt_maps.h"
+#include "tests/support/commands.h"
 #include "tests/support/temp_dir.h"
 #include "tools/evaluate_workspace.h"
 
@@ -35,14 +36,9 @@ constexpr double kMaxWithin1PercentScaled = 0.01;
 constexpr double kMaxAccuracyScaledFine = 0.10;
 constexpr double kMaxF1MultiScaledCoarse = 0.60;
 
-std::string ColmapExecutable() {
-  const char* env = std::getenv("MSP_REAL_COLMAP");
-  return env != nullptr ? env : "/usr/bin/colmap";
-}
-
 // Runs colmap stereo_fusion on the workspace's geometric maps.
 bool Fuse(const std::string& ws, const std::string& output) {
-  const std::string command = ColmapExecutable() + " stereo_fusion --workspace_path " + ws +
+  const std::string command = test::RealColmap() + " stereo_fusion --workspace_path " + ws +
                               " --input_type geometric --output_path " + output + " > " + output +
                               ".log 2>&1";
   return std::system(command.c_str()) == 0 && fs::exists(output);
@@ -67,8 +63,8 @@ class ContractTest : public testing::Test {
     scene::GenerateScene(options);
   }
   void SetUp() override {
-    ASSERT_TRUE(fs::exists(ColmapExecutable()))
-        << "colmap is not installed at " << ColmapExecutable();
+    ASSERT_TRUE(fs::exists(test::RealColmap()))
+        << "colmap is not installed at " << test::RealColmap();
   }
   static std::unique_ptr<test::TempDir> scratch_;
   static std::string workspace_;
@@ -88,9 +84,15 @@ TEST_F(ContractTest, ExactMapsFuseOntoTheSurface) {
   EXPECT_EQ(r.num_missing_maps, 0);
   EXPECT_DOUBLE_EQ(r.average.all.complete[0], 1.0);
   EXPECT_DOUBLE_EQ(r.average.all.median_normal_error_deg, 0.0);
-  ASSERT_EQ(r.cloud.thresholds.size(), 2u);
+  // 0.5 % and 2 % of the extent, then 2 cm and 5 cm.
+  ASSERT_EQ(r.cloud.thresholds.size(), 4u);
   const eval::CloudThresholdMetrics& fine = r.cloud.thresholds[0];
   const eval::CloudThresholdMetrics& coarse = r.cloud.thresholds[1];
+  EXPECT_TRUE(r.cloud.thresholds[2].absolute);
+  EXPECT_DOUBLE_EQ(r.cloud.thresholds[2].metres, 0.02);
+  EXPECT_GE(r.cloud.thresholds[2].accuracy, kMinAccuracyExact);
+  // Rendered depth has a value at every pixel: every fused point is judged.
+  EXPECT_EQ(r.cloud.num_judged, r.cloud.num_points);
   RecordProperty("fused_points", r.cloud.num_points);
   RecordProperty("f1_multi_fine_permille", static_cast<int>(1000 * fine.f1_multi));
   RecordProperty("f1_multi_coarse_permille", static_cast<int>(1000 * coarse.f1_multi));

@@ -26,6 +26,7 @@
 
 #include "colmap_ext/dense_map_io.h"
 #include "integration/scene/generate.h"
+#include "tests/support/commands.h"
 #include "tests/support/files.h"
 #include "tests/support/temp_dir.h"
 #include "tools/evaluate_workspace.h"
@@ -47,14 +48,8 @@ constexpr double kMinAlikeEdgeWithin1 = 0.23;
 constexpr double kMinAlikeEdgeShare = 0.08;
 constexpr int kNumViews = 6;
 
-std::string RealColmap() {
-  const char* env = std::getenv("MSP_REAL_COLMAP");
-  return env != nullptr ? env : "/usr/bin/colmap";
-}
-
 int RunLogged(const std::string& command, const std::string& log) {
-  const std::string full = "REAL_COLMAP=" + RealColmap() + " " + command + " > " + log + " 2>&1";
-  return std::system(full.c_str());
+  return test::RunLogged("REAL_COLMAP=" + test::RealColmap() + " " + command, log);
 }
 
 class EndToEndTest : public testing::Test {
@@ -80,7 +75,8 @@ std::string EndToEndTest::ws_;
 const std::string kColmap = std::string(MSP_BIN_DIR) + "/colmap";
 
 TEST_F(EndToEndTest, StereoFusionEvaluateThenResume) {
-  ASSERT_TRUE(fs::exists(RealColmap())) << "colmap is not installed at " << RealColmap();
+  ASSERT_TRUE(fs::exists(test::RealColmap()))
+      << "colmap is not installed at " << test::RealColmap();
   ASSERT_EQ(RunLogged(kColmap + " msp_stereo --workspace_path " + ws_ + " --MspStereo.seed 1",
                       ws_ + "/stereo.log"),
             0)

@@ -23,12 +23,15 @@
 #include "colmap_ext/map_previews.h"
 #include "colmap_ext/prior_previews.h"
 #include "integration/scene/generate.h"
+#include "tests/support/commands.h"
 #include "tests/support/files.h"
 #include "tests/support/temp_dir.h"
 #include "tools/evaluate_workspace.h"
 
 namespace msp {
 namespace {
+
+using test::RunLogged;
 
 namespace fs = std::filesystem;
 
@@ -51,10 +54,6 @@ void MakeScene(const std::string& ws, uint64_t seed, int width, int height, int 
   options.rig.height = height;
   options.rig.num_cameras = num_cameras;
   scene::GenerateScene(options);
-}
-
-int RunLogged(const std::string& command, const std::string& log) {
-  return std::system((command + " > " + log + " 2>&1").c_str());
 }
 
 Rgb PngPixel(const cv::Mat& bgr, int row, int col) {

@@ -7,6 +7,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config   # toolchain
   libeigen3-dev libopencv-dev libboost-program-options-dev  # libraries
   libopencv-contrib-dev                          # ximgproc: a graph segmenter of the prior
+  libsqlite3-dev                                 # msp_import_rgbd reads COLMAP's database
   libgtest-dev libgmock-dev                      # tests
   clang libclang-rt-14-dev                       # libFuzzer targets of the readers (scripts/fuzz.sh)
   dpkg-dev                                       # cpack -G DEB: dpkg-shlibdeps finds the runtime libraries

@@ -25,6 +25,7 @@ struct RegionAccumulator {
   int num_gt = 0;
   int num_valid = 0;
   int within[2] = {0, 0};
+  int within_abs[2] = {0, 0};
   std::vector<float> rel_errors;
   std::vector<float> normal_errors;
 
@@ -36,6 +37,8 @@ struct RegionAccumulator {
     for (int k = 0; k < 2; ++k) {
       m.complete[k] = num_gt > 0 ? static_cast<double>(within[k]) / num_gt : 0.0;
       m.accurate[k] = num_valid > 0 ? static_cast<double>(within[k]) / num_valid : 0.0;
+      m.complete_abs[k] = num_gt > 0 ? static_cast<double>(within_abs[k]) / num_gt : 0.0;
+      m.accurate_abs[k] = num_valid > 0 ? static_cast<double>(within_abs[k]) / num_valid : 0.0;
     }
     m.median_rel_error = Median(&rel_errors);
     m.median_normal_error_deg = Median(&normal_errors);
@@ -68,6 +71,8 @@ void AddRegion(RegionSum* total, const RegionMetrics& m, bool missing) {
   for (int k = 0; k < 2; ++k) {
     sum->complete[k] += m.complete[k];
     sum->accurate[k] += m.accurate[k];
+    sum->complete_abs[k] += m.complete_abs[k];
+    sum->accurate_abs[k] += m.accurate_abs[k];
   }
   sum->median_rel_error += m.median_rel_error;
   sum->median_normal_error_deg += m.median_normal_error_deg;
@@ -81,6 +86,8 @@ RegionMetrics Mean(const RegionSum& total) {
   for (int k = 0; k < 2; ++k) {
     m.complete[k] /= n;
     m.accurate[k] /= n;
+    m.complete_abs[k] /= n;
+    m.accurate_abs[k] /= n;
   }
   m.median_rel_error /= n;
   m.median_normal_error_deg /= n;
@@ -104,12 +111,13 @@ void CheckMask(const cv::Mat& mask, const DenseMap& gt, const char* what) {
 
 DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
                                  const DenseMap& gt_depth, const DenseMap& gt_normal,
-                                 const RegionMasks& masks, const double thresholds[2]) {
+                                 const RegionMasks& masks, const DepthThresholds& thresholds) {
   DepthMapMetrics out;
   out.width = depth.width;
   out.height = depth.height;
-  const bool has_normal =
-      normal.channels == 3 && normal.width == depth.width && normal.height == depth.height;
+  const bool has_normal = normal.channels == 3 && normal.width == depth.width &&
+                          normal.height == depth.height && gt_normal.channels == 3 &&
+                          gt_normal.width == gt_depth.width && gt_normal.height == gt_depth.height;
   CheckMask(masks.textureless, gt_depth, "textureless");
   CheckMask(masks.near_edge, gt_depth, "near-edge");
   CheckMask(masks.alike_edge, gt_depth, "alike-edge");
@@ -126,9 +134,10 @@ DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
       if (InMask(masks.alike_edge, gt_row, gt_col)) regions[3] = &alike_edge;
       const float d = depth.At(row, col);
       const bool valid = std::isfinite(d) && d > 0.0f;
-      double rel = 0.0, angle = -1.0;
+      double rel = 0.0, abs_error = 0.0, angle = -1.0;
       if (valid) {
-        rel = std::abs(static_cast<double>(d) - d_gt) / d_gt;
+        abs_error = std::abs(static_cast<double>(d) - d_gt);
+        rel = abs_error / d_gt;
         if (has_normal) {
           const float n[3] = {normal.At(row, col, 0), normal.At(row, col, 1),
                               normal.At(row, col, 2)};
@@ -142,7 +151,10 @@ DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
         ++acc->num_gt;
         if (!valid) continue;
         ++acc->num_valid;
-        for (int k = 0; k < 2; ++k) acc->within[k] += rel <= thresholds[k] ? 1 : 0;
+        for (int k = 0; k < 2; ++k) {
+          acc->within[k] += rel <= thresholds.relative[k] ? 1 : 0;
+          acc->within_abs[k] += abs_error <= thresholds.absolute[k] ? 1 : 0;
+        }
         acc->rel_errors.push_back(static_cast<float>(rel));
         if (angle >= 0.0) acc->normal_errors.push_back(static_cast<float>(angle));
       }

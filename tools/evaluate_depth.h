@@ -11,6 +11,14 @@
 namespace msp {
 namespace eval {
 
+// A pixel's depth is within threshold k when |d - d_gt| / d_gt <= relative[k]
+// (the "1 %" / "5 %" figures), and separately when |d - d_gt| <= absolute[k]
+// metres (the "2 cm" / "5 cm" figures).
+struct DepthThresholds {
+  double relative[2] = {0.01, 0.05};
+  double absolute[2] = {0.02, 0.05};
+};
+
 // Figures over one set of pixels (the whole image, its textureless part, the
 // rest, or the bands around true depth edges).
 // "Complete" counts over all ground-truth pixels (missing predictions count
@@ -21,6 +29,8 @@ struct RegionMetrics {
   double valid_fraction = 0.0;           // num_valid / num_gt
   double complete[2] = {0, 0};           // fraction of num_gt within threshold k
   double accurate[2] = {0, 0};           // fraction of num_valid within threshold k
+  double complete_abs[2] = {0, 0};       // as complete, absolute threshold k
+  double accurate_abs[2] = {0, 0};       // as accurate, absolute threshold k
   double median_rel_error = 0.0;         // |d - d_gt| / d_gt over valid predictions
   double median_normal_error_deg = 0.0;  // over valid predictions with a non-zero normal
 };
@@ -32,7 +42,7 @@ struct DepthMapMetrics {
   int height = 0;
   RegionMetrics all;
   RegionMetrics textureless;
-  RegionMetrics textured;  // the rest of the ground-truth pixels
+  RegionMetrics textured;    // the rest of the ground-truth pixels
   RegionMetrics near_edge;   // near a true depth edge (tools/edge_regions.h)
   RegionMetrics alike_edge;  // of those, near an edge between alike colours
   int edge_band_radius = 0;  // of near_edge / alike_edge, in ground-truth pixels
@@ -51,11 +61,13 @@ struct RegionMasks {
 
 // The prediction may be smaller than the ground truth (max_image_size): the
 // ground truth and the masks are sampled nearest-neighbour at each predicted
-// pixel (NearestGroundTruthIndex, colmap_ext/ground_truth.h). `normal` may be
-// empty (then normal errors are 0).
+// pixel (NearestGroundTruthIndex, colmap_ext/ground_truth.h). Pixels whose
+// ground truth is 0 (no measurement, for sensor depth) count neither way.
+// `normal` or `gt_normal` may be empty (then normal errors are 0); a zero
+// ground-truth normal is "none" and that pixel has no normal error.
 DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
                                  const DenseMap& gt_depth, const DenseMap& gt_normal,
-                                 const RegionMasks& masks, const double thresholds[2]);
+                                 const RegionMasks& masks, const DepthThresholds& thresholds);
 
 // Mean over images of every figure. Missing maps count as zeros; an image
 // whose region holds no ground-truth pixel has no figure for it and is left

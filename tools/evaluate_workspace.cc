@@ -3,10 +3,14 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
+#include "colmap_ext/camera_conversion.h"
 #include "colmap_ext/dense_map_io.h"
 #include "colmap_ext/errors.h"
 #include "colmap_ext/map_previews.h"
+#include "colmap_ext/sparse_model.h"
+#include "colmap_ext/workspace.h"
 #include "tools/edge_regions.h"
+#include "tools/measured_points.h"
 #include "tools/ply_points.h"
 
 namespace msp {
@@ -16,6 +20,34 @@ namespace {
 std::string MapPath(const std::string& workspace, const char* folder, const std::string& name,
                     const std::string& type) {
   return workspace + "/stereo/" + folder + "/" + name + "." + type + ".bin";
+}
+
+DepthThresholds Thresholds(const GroundTruthInfo& info) {
+  DepthThresholds t;
+  for (int k = 0; k < 2; ++k) {
+    t.relative[k] = info.depth_relative_thresholds[k];
+    t.absolute[k] = info.absolute_thresholds_m[k];
+  }
+  return t;
+}
+
+// The ground-truth views with the workspace's cameras, for MeasuredPoints.
+std::vector<MeasuredView> MeasuredViews(const std::string& workspace, const GroundTruthInfo& info) {
+  const SparseModel model = ReadSparseModel(workspace + "/sparse");
+  std::vector<MeasuredView> views;
+  for (const std::string& name : info.image_names) {
+    const int image = model.FindImageByName(name);
+    const int camera = image < 0 ? -1 : model.FindCamera(model.images[image].camera_id);
+    if (camera < 0) {
+      throw InputError(workspace + "/sparse: no image `" + name + "` of the ground truth");
+    }
+    MeasuredView view;
+    view.depth = ReadDenseMap(info.DepthMapPath(name));
+    view.camera = MakeCoreCamera(model.cameras[camera], model.images[image]);
+    ResizeCamera(view.depth.width, view.depth.height, &view.camera);
+    views.push_back(std::move(view));
+  }
+  return views;
 }
 
 DepthMapMetrics EvaluateOne(const EvaluationOptions& options, const GroundTruthInfo& info,
@@ -34,10 +66,12 @@ DepthMapMetrics EvaluateOne(const EvaluationOptions& options, const GroundTruthI
   DenseMap normal;
   if (std::filesystem::exists(normal_path)) normal = ReadDenseMap(normal_path);
   const DenseMap gt_depth = ReadDenseMap(info.DepthMapPath(name));
-  const DenseMap gt_normal = ReadDenseMap(info.NormalMapPath(name));
+  const DenseMap gt_normal = info.has_normals ? ReadDenseMap(info.NormalMapPath(name)) : DenseMap();
   RegionMasks masks;
-  masks.textureless = cv::imread(info.TexturelessPath(name), cv::IMREAD_GRAYSCALE);
-  if (masks.textureless.empty()) throw InputError("cannot read " + info.TexturelessPath(name));
+  if (info.has_textureless) {
+    masks.textureless = cv::imread(info.TexturelessPath(name), cv::IMREAD_GRAYSCALE);
+    if (masks.textureless.empty()) throw InputError("cannot read " + info.TexturelessPath(name));
+  }
   // The edges' colours are those the method saw: the workspace's own image.
   const std::string image_path = options.workspace + "/images/" + name;
   const cv::Mat image = cv::imread(image_path, cv::IMREAD_COLOR);
@@ -49,7 +83,7 @@ DepthMapMetrics EvaluateOne(const EvaluationOptions& options, const GroundTruthI
   const EdgeRegions edges = FindEdgeRegions(gt_depth, image, band);
   masks.near_edge = edges.near_edge;
   masks.alike_edge = edges.alike_edge;
-  m = EvaluateDepthMap(depth, normal, gt_depth, gt_normal, masks, info.depth_relative_thresholds);
+  m = EvaluateDepthMap(depth, normal, gt_depth, gt_normal, masks, Thresholds(info));
   m.name = name;
   m.edge_band_radius = band;
   return m;
@@ -70,15 +104,19 @@ EvaluationResult EvaluateWorkspace(const EvaluationOptions& options) {
     result.average = AverageMetrics(result.maps);
   }
   if (!options.fused.empty()) {
+    const GroundTruthInfo& info = result.info;
     const PlyPoints fused = ReadPlyPoints(options.fused);
-    const PlyPoints gt = ReadPlyPoints(result.info.SurfacePath());
-    const std::vector<double> fractions(std::begin(result.info.cloud_threshold_fractions),
-                                        std::end(result.info.cloud_threshold_fractions));
+    const PlyPoints gt = ReadPlyPoints(info.SurfacePath());
+    const std::vector<CloudThreshold> thresholds = CloudThresholds(
+        info.extent,
+        {std::begin(info.cloud_threshold_fractions), std::end(info.cloud_threshold_fractions)},
+        {std::begin(info.absolute_thresholds_m), std::end(info.absolute_thresholds_m)});
+    const std::vector<uint8_t> judged =
+        MeasuredPoints(fused.points, MeasuredViews(options.workspace, info));
     result.has_cloud = true;
     result.fused = options.fused;
-    result.cloud =
-        EvaluateCloud(fused.points, gt.points, gt.num_views, result.info.min_views_for_completeness,
-                      result.info.extent, fractions);
+    result.cloud = EvaluateCloud(fused.points, judged, gt.points, gt.num_views,
+                                 info.min_views_for_completeness, info.extent, thresholds);
   }
   return result;
 }

@@ -20,6 +20,10 @@ struct PinholeView {
   Eigen::Vector3d t = Eigen::Vector3d::Zero();      // X_cam = R X_world + t
 
   Eigen::Vector3d Center() const { return -R.transpose() * t; }
+  // Camera-frame point at camera z `depth` through pixel (col, row).
+  Eigen::Vector3d CameraPoint(double col, double row, double depth) const {
+    return Eigen::Vector3d(depth * (col - cx) / fx, depth * (row - cy) / fy, depth);
+  }
   // Unit world-space direction of the ray through pixel (col, row).
   Eigen::Vector3d RayDirection(double col, double row) const;
   // Image point and camera z of a world point; false when behind the camera.

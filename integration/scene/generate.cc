@@ -1,6 +1,7 @@
 #include "integration/scene/generate.h"
 
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "integration/scene/parallel.h"
@@ -59,7 +60,8 @@ GeneratorSummary GenerateScene(const GeneratorOptions& options) {
   const SurfaceSample sample = SampleVisibleSurface(scene, views, rendered);
 
   WriteColmapWorkspace(options.output, model, rendered);
-  WriteGroundTruth(options.output, views, rendered, sample, options.seed);
+  WriteGroundTruth(options.output, views, rendered, sample,
+                   GroundTruthJson(views, sample, {{"seed", std::to_string(options.seed)}}));
 
   GeneratorSummary summary;
   summary.num_images = static_cast<int>(views.size());

@@ -64,13 +64,15 @@ std::string JsonVector(const Eigen::Vector3d& v) {
   return s.str();
 }
 
-std::string SceneJson(const std::vector<PinholeView>& views, const SurfaceSample& sample,
-                      uint64_t seed) {
+}  // namespace
+
+std::string GroundTruthJson(const std::vector<PinholeView>& views, const SurfaceSample& sample,
+                            const std::vector<std::pair<std::string, std::string>>& header) {
   const double extent = sample.Extent();
   std::ostringstream s;
-  s << std::setprecision(10) << "{\n"
-    << "  \"seed\": " << seed << ",\n"
-    << "  \"extent\": " << extent << ",\n"
+  s << std::setprecision(10) << "{\n";
+  for (const auto& entry : header) s << "  \"" << entry.first << "\": " << entry.second << ",\n";
+  s << "  \"extent\": " << extent << ",\n"
     << "  \"bbox_min\": " << JsonVector(sample.bbox_min) << ",\n"
     << "  \"bbox_max\": " << JsonVector(sample.bbox_max) << ",\n"
     << "  \"surface_sample_spacing\": " << kSurfaceSampleSpacing << ",\n"
@@ -93,8 +95,6 @@ std::string SceneJson(const std::vector<PinholeView>& views, const SurfaceSample
   s << "  ]\n}\n";
   return s.str();
 }
-
-}  // namespace
 
 void WriteColmapWorkspace(const std::string& dir, const SparseModel& model,
                           const std::vector<RenderedView>& rendered) {
@@ -119,7 +119,7 @@ void WriteColmapWorkspace(const std::string& dir, const SparseModel& model,
 
 void WriteGroundTruth(const std::string& dir, const std::vector<PinholeView>& views,
                       const std::vector<RenderedView>& rendered, const SurfaceSample& sample,
-                      uint64_t seed) {
+                      const std::string& scene_json) {
   const fs::path gt = fs::path(dir) / "ground_truth";
   std::string names;
   for (size_t i = 0; i < views.size(); ++i) {
@@ -133,7 +133,7 @@ void WriteGroundTruth(const std::string& dir, const std::vector<PinholeView>& vi
   fs::create_directories(gt);
   WriteSurfacePly((gt / "surface.ply").string(), sample);
   WriteText(gt / "images.txt", names);
-  WriteText(gt / "scene.json", SceneJson(views, sample, seed));
+  WriteText(gt / "scene.json", scene_json);
 }
 
 }  // namespace scene

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "colmap_ext/sparse_model.h"
@@ -29,11 +30,20 @@ constexpr int kNumPatchMatchSources = 20;
 void WriteColmapWorkspace(const std::string& dir, const SparseModel& model,
                           const std::vector<RenderedView>& rendered);
 
+// scene.json: the extent and bounding box of the surface sample, the
+// evaluator's thresholds and every camera, after `header`'s entries (key and
+// a value already in JSON form, e.g. {"seed", "1"}), which say where the
+// ground truth came from.
+std::string GroundTruthJson(const std::vector<PinholeView>& views, const SurfaceSample& sample,
+                            const std::vector<std::pair<std::string, std::string>>& header);
+
 // ground_truth/{depth_maps,normal_maps}/<name>.bin, textureless/<name>.png,
-// surface.ply, images.txt (one name per line) and scene.json.
+// surface.ply, images.txt (one name per line) and scene.json (the given text,
+// GroundTruthJson). `rendered` gives each view's depth, normal and
+// textureless maps (its image is not written here).
 void WriteGroundTruth(const std::string& dir, const std::vector<PinholeView>& views,
                       const std::vector<RenderedView>& rendered, const SurfaceSample& sample,
-                      uint64_t seed);
+                      const std::string& scene_json);
 
 }  // namespace scene
 }  // namespace msp

@@ -12,12 +12,6 @@
 
 namespace msp {
 namespace scene {
-namespace {
-
-// Voxel key of a point; 21 bits per axis cover +-10 km at 1 cm. The grid is
-// shifted by half a cell so that the scene's planes, all at round
-// coordinates, lie mid-cell: on a cell boundary, rounding noise would split
-// one plane over two layers of cells and double its sample density.
 uint64_t VoxelKey(const Eigen::Vector3d& p, double spacing) {
   constexpr double kHalfCell = 0.5;
   constexpr int64_t kBias = 1 << 20;
@@ -30,7 +24,15 @@ uint64_t VoxelKey(const Eigen::Vector3d& p, double spacing) {
   return key;
 }
 
-}  // namespace
+void SetBoundingBox(SurfaceSample* sample) {
+  if (sample->points.empty()) return;
+  sample->bbox_min = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
+  sample->bbox_max = Eigen::Vector3d::Constant(std::numeric_limits<double>::lowest());
+  for (const Eigen::Vector3f& p : sample->points) {
+    sample->bbox_min = sample->bbox_min.cwiseMin(p.cast<double>());
+    sample->bbox_max = sample->bbox_max.cwiseMax(p.cast<double>());
+  }
+}
 
 SurfaceSample SampleVisibleSurface(const Scene& scene, const std::vector<PinholeView>& views,
                                    const std::vector<RenderedView>& rendered, double spacing) {
@@ -45,8 +47,7 @@ SurfaceSample SampleVisibleSurface(const Scene& scene, const std::vector<Pinhole
       for (int col = 0; col < depth.width; ++col) {
         const double d = depth.At(row, col);
         if (!(d > 0.0)) continue;
-        const Eigen::Vector3d cam(d * (col - view.cx) / view.fx, d * (row - view.cy) / view.fy, d);
-        const Eigen::Vector3d X = Rt * (cam - view.t);
+        const Eigen::Vector3d X = Rt * (view.CameraPoint(col, row, d) - view.t);
         if (!occupied.insert(VoxelKey(X, spacing)).second) continue;
         const Eigen::Vector3d n(normal.At(row, col, 0), normal.At(row, col, 1),
                                 normal.At(row, col, 2));
@@ -70,14 +71,7 @@ SurfaceSample SampleVisibleSurface(const Scene& scene, const std::vector<Pinhole
       sample.num_views[i] = static_cast<uint8_t>(std::min(count, 255));
     }
   });
-  if (num_points > 0) {
-    sample.bbox_min = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
-    sample.bbox_max = Eigen::Vector3d::Constant(std::numeric_limits<double>::lowest());
-    for (const Eigen::Vector3f& p : sample.points) {
-      sample.bbox_min = sample.bbox_min.cwiseMin(p.cast<double>());
-      sample.bbox_max = sample.bbox_max.cwiseMax(p.cast<double>());
-    }
-  }
+  SetBoundingBox(&sample);
   return sample;
 }
 

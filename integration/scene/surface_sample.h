@@ -28,6 +28,15 @@ struct SurfaceSample {
   double Extent() const { return (bbox_max - bbox_min).norm(); }
 };
 
+// Voxel key of a point; 21 bits per axis cover +-10 km at 1 cm. The grid is
+// shifted by half a cell so that the scene's planes, all at round
+// coordinates, lie mid-cell: on a cell boundary, rounding noise would split
+// one plane over two layers of cells and double its sample density.
+uint64_t VoxelKey(const Eigen::Vector3d& p, double spacing);
+
+// bbox_min / bbox_max from the points (left at zero when there are none).
+void SetBoundingBox(SurfaceSample* sample);
+
 // Back-projects every pixel of every rendered view (its ground-truth depth and
 // normal), keeps the first point per `spacing` voxel in view / row / column
 // order, then counts visibility in all views by ray casting.

@@ -21,6 +21,36 @@ TEST(GroundTruth, ReadsImagesExtentAndOptionalThresholds) {
   EXPECT_EQ(info.DepthMapPath("a.png"), dir.path() + "/depth_maps/a.png.bin");
 }
 
+// msp_import_rgbd's scene.json: absolute thresholds, where the depth came
+// from and the rules of what was derived; the optional folders' presence.
+TEST(GroundTruth, ReadsSensorProvenanceAndOptionalFolders) {
+  const test::TempDir dir;
+  test::WriteRaw(dir / "images.txt", "a.png\n");
+  test::WriteRaw(
+      dir / "scene.json",
+      "{\"extent\": 2, \"absolute_threshold_metres_1\": 0.01,\n"
+      " \"depth_source\": \"sensor, 1000 per metre\", \"normals_rule\" : \"plane fit\"}");
+  test::WriteRaw(dir / "normal_maps/a.png.bin", "");
+  const GroundTruthInfo info = ReadGroundTruthInfo(dir.path());
+  EXPECT_DOUBLE_EQ(info.absolute_thresholds_m[0], 0.01);
+  EXPECT_DOUBLE_EQ(info.absolute_thresholds_m[1], 0.05);  // default kept
+  EXPECT_EQ(info.depth_source, "sensor, 1000 per metre");
+  EXPECT_EQ(info.normals_rule, "plane fit");
+  EXPECT_EQ(info.textureless_rule, "");
+  EXPECT_TRUE(info.has_normals);
+  EXPECT_FALSE(info.has_textureless);
+}
+
+TEST(GroundTruth, JsonStringNeedsAQuotedValue) {
+  std::string value = "kept";
+  EXPECT_FALSE(FindJsonString("{\"a\": 3}", "a", &value));
+  EXPECT_FALSE(FindJsonString("{\"a\": \"open", "a", &value));
+  EXPECT_FALSE(FindJsonString("{\"b\": \"x\"}", "a", &value));
+  EXPECT_EQ(value, "kept");
+  EXPECT_TRUE(FindJsonString("{\"a\":\"\"}", "a", &value));
+  EXPECT_EQ(value, "");
+}
+
 TEST(GroundTruth, MissingExtentOrFileIsAnInputError) {
   const test::TempDir dir;
   EXPECT_THROW(ReadGroundTruthInfo(dir.path()), InputError);  // no images.txt

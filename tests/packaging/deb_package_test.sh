@@ -31,7 +31,8 @@ expect_eq "nothing in /usr/bin" "$(printf '%s\n' "$contents" | grep -c ' \./usr/
 ROOT="$TMP/root"
 dpkg-deb -x "$DEB" "$ROOT"
 BIN="$ROOT/usr/lib/msp-stereo/bin"
-for tool in msp_stereo colmap msp_evaluate msp_make_scene msp_write_gt_maps msp_convert_masks; do
+for tool in msp_stereo colmap msp_evaluate msp_make_scene msp_write_gt_maps msp_convert_masks \
+    msp_import_rgbd; do
   if [ -x "$BIN/$tool" ]; then pass "installed $tool"; else fail "installed $tool"; fi
 done
 

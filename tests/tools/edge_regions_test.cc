@@ -140,8 +140,7 @@ TEST(FindEdgeRegions, PixelsWithoutDepthAreNeitherEdgeNorBand) {
   // valid depths: a missing depth makes no edge.
   depth.At(5, 17) = 0.0f;
   for (int r = 0; r < kHeight; ++r) depth.At(r, 0) = 0.0f;
-  const EdgeRegions regions =
-      FindEdgeRegions(depth, TwoColours({90, 90, 90}, {90, 90, 90}), 4);
+  const EdgeRegions regions = FindEdgeRegions(depth, TwoColours({90, 90, 90}, {90, 90, 90}), 4);
   EXPECT_EQ(regions.near_edge.at<uint8_t>(5, 17), 0);
   EXPECT_EQ(cv::countNonZero(regions.near_edge), 10 * kHeight - 1);
 }

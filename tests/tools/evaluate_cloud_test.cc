@@ -30,7 +30,8 @@ TEST(PointGrid, FindsNeighboursWithinRadiusOnly) {
 
 TEST(EvaluateCloud, IdenticalSetsScorePerfectly) {
   const std::vector<Eigen::Vector3f> gt = PlaneGrid();
-  const CloudMetrics m = EvaluateCloud(gt, gt, {}, 3, 1.0, {0.005, 0.02});
+  const CloudMetrics m =
+      EvaluateCloud(gt, {}, gt, {}, 3, 1.0, CloudThresholds(1.0, {0.005, 0.02}, {}));
   ASSERT_EQ(m.thresholds.size(), 2u);
   for (const CloudThresholdMetrics& t : m.thresholds) {
     EXPECT_DOUBLE_EQ(t.accuracy, 1.0);
@@ -44,12 +45,37 @@ TEST(EvaluateCloud, IdenticalSetsScorePerfectly) {
 TEST(EvaluateCloud, ShiftBetweenThresholdsFailsOnlyTheSmallOne) {
   const std::vector<Eigen::Vector3f> gt = PlaneGrid();
   // 1 cm off the plane: beyond 0.5 cm, within 2 cm.
-  const CloudMetrics m = EvaluateCloud(PlaneGrid(0.01f), gt, {}, 3, 1.0, {0.005, 0.02});
+  const CloudMetrics m =
+      EvaluateCloud(PlaneGrid(0.01f), {}, gt, {}, 3, 1.0, CloudThresholds(1.0, {0.005}, {0.02}));
   EXPECT_DOUBLE_EQ(m.thresholds[0].accuracy, 0.0);
   EXPECT_DOUBLE_EQ(m.thresholds[0].completeness, 0.0);
   EXPECT_DOUBLE_EQ(m.thresholds[0].f1, 0.0);
   EXPECT_DOUBLE_EQ(m.thresholds[1].accuracy, 1.0);
   EXPECT_DOUBLE_EQ(m.thresholds[1].completeness, 1.0);
+  EXPECT_FALSE(m.thresholds[0].absolute);
+  EXPECT_TRUE(m.thresholds[1].absolute);  // the absolute ones come after
+  EXPECT_DOUBLE_EQ(m.thresholds[1].metres, 0.02);
+  EXPECT_DOUBLE_EQ(m.thresholds[1].fraction, 0.02);
+}
+
+// Points the ground truth has no measurement for are left out of accuracy;
+// completeness is over the samples and does not change.
+TEST(EvaluateCloud, UnjudgedPointsCountNeitherWay) {
+  const std::vector<Eigen::Vector3f> gt = PlaneGrid();
+  std::vector<Eigen::Vector3f> points = gt;
+  std::vector<uint8_t> judged(points.size(), 1);
+  for (size_t i = 0; i < gt.size(); ++i) {
+    points.push_back(gt[i] + Eigen::Vector3f(0, 0, 1));
+    judged.push_back(i % 2 == 0 ? 0 : 1);  // half the outliers are judged
+  }
+  const CloudMetrics m =
+      EvaluateCloud(points, judged, gt, {}, 3, 1.0, CloudThresholds(1.0, {}, {0.005}));
+  const size_t judged_outliers = gt.size() / 2;  // odd indices
+  EXPECT_EQ(m.num_points, static_cast<int>(2 * gt.size()));
+  EXPECT_EQ(m.num_judged, static_cast<int>(gt.size() + judged_outliers));
+  EXPECT_DOUBLE_EQ(m.thresholds[0].accuracy,
+                   static_cast<double>(gt.size()) / (gt.size() + judged_outliers));
+  EXPECT_DOUBLE_EQ(m.thresholds[0].completeness, 1.0);
 }
 
 TEST(EvaluateCloud, HalfCoverageAndOutliersGiveExpectedFigures) {
@@ -62,7 +88,8 @@ TEST(EvaluateCloud, HalfCoverageAndOutliersGiveExpectedFigures) {
   }
   const size_t inliers = points.size();
   for (size_t i = 0; i < inliers; ++i) points.push_back(points[i] + Eigen::Vector3f(0, 0, 1));
-  const CloudMetrics m = EvaluateCloud(points, gt, {}, 3, 1.0, {0.002});
+  const CloudMetrics m =
+      EvaluateCloud(points, {}, gt, {}, 3, 1.0, CloudThresholds(1.0, {0.002}, {}));
   const CloudThresholdMetrics& t = m.thresholds[0];
   EXPECT_DOUBLE_EQ(t.accuracy, 0.5);
   EXPECT_NEAR(t.completeness, 51.0 / 101.0, 1e-12);
@@ -73,7 +100,8 @@ TEST(EvaluateCloud, MultiViewCompletenessIgnoresSamplesSeenByFewViews) {
   const std::vector<Eigen::Vector3f> gt = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}};
   const std::vector<uint8_t> views = {2, 3, 5, 2};
   const std::vector<Eigen::Vector3f> points = {{1, 0, 0}, {2, 0, 0}};
-  const CloudMetrics m = EvaluateCloud(points, gt, views, 3, 10.0, {0.01});
+  const CloudMetrics m =
+      EvaluateCloud(points, {}, gt, views, 3, 10.0, CloudThresholds(10.0, {0.01}, {}));
   EXPECT_EQ(m.num_gt_multi, 2);
   EXPECT_DOUBLE_EQ(m.thresholds[0].completeness, 0.5);
   EXPECT_DOUBLE_EQ(m.thresholds[0].completeness_multi, 1.0);
@@ -81,7 +109,8 @@ TEST(EvaluateCloud, MultiViewCompletenessIgnoresSamplesSeenByFewViews) {
 }
 
 TEST(EvaluateCloud, EmptyReconstructionScoresZero) {
-  const CloudMetrics m = EvaluateCloud({}, PlaneGrid(), {}, 3, 1.0, {0.02});
+  const CloudMetrics m =
+      EvaluateCloud({}, {}, PlaneGrid(), {}, 3, 1.0, CloudThresholds(1.0, {0.02}, {}));
   EXPECT_EQ(m.num_points, 0);
   EXPECT_DOUBLE_EQ(m.thresholds[0].accuracy, 0.0);
   EXPECT_DOUBLE_EQ(m.thresholds[0].completeness, 0.0);

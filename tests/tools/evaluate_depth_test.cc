@@ -9,7 +9,8 @@ namespace msp {
 namespace eval {
 namespace {
 
-constexpr double kThresholds[2] = {0.01, 0.05};
+// 1 % / 5 % relative, 2 cm / 5 cm absolute.
+const DepthThresholds kThresholds;
 
 // Ground truth: depth 2 + col / 100, normal (0, 0, -1); textureless on the
 // left half.
@@ -84,6 +85,42 @@ TEST(EvaluateDepthMap, InvalidPixelsCountAgainstCompletenessOnly) {
   EXPECT_DOUBLE_EQ(m.textured.complete[1], 1.0);
 }
 
+// Ground truth at 2.00-2.07 m: +3 cm is beyond 2 cm and within 5 cm
+// (absolute) while within 5 % (relative) as well.
+TEST(EvaluateDepthMap, AbsoluteThresholdsBesideRelativeOnes) {
+  const GroundTruth gt;
+  DenseMap depth = gt.depth;
+  for (float& d : depth.data) d += 0.03f;
+  depth.At(0, 0) = 0.0f;  // one pixel without a prediction
+  const DepthMapMetrics m =
+      EvaluateDepthMap(depth, DenseMap(), gt.depth, gt.normal, gt.masks, kThresholds);
+  EXPECT_DOUBLE_EQ(m.all.complete_abs[0], 0.0);
+  EXPECT_DOUBLE_EQ(m.all.complete_abs[1], 47.0 / 48.0);
+  EXPECT_DOUBLE_EQ(m.all.accurate_abs[1], 1.0);
+  EXPECT_DOUBLE_EQ(m.all.complete[0], 0.0);
+  EXPECT_DOUBLE_EQ(m.all.accurate[1], 1.0);
+}
+
+// Sensor ground truth: a pixel without a measurement (0) is counted neither
+// as missed nor as accurate or wrong, whatever the prediction there.
+TEST(EvaluateDepthMap, PixelsWithoutMeasurementCountNeitherWay) {
+  GroundTruth gt;
+  DenseMap depth = gt.depth;
+  for (int c = 0; c < 8; ++c) {
+    gt.depth.At(0, c) = 0.0f;  // unmeasured row
+    depth.At(0, c) = 9.0f;     // a wrong prediction there
+    depth.At(1, c) = 0.0f;     // no prediction on a measured row
+  }
+  const DepthMapMetrics m =
+      EvaluateDepthMap(depth, DenseMap(), gt.depth, DenseMap(), gt.masks, kThresholds);
+  EXPECT_EQ(m.all.num_gt, 40);
+  EXPECT_EQ(m.all.num_valid, 32);
+  EXPECT_DOUBLE_EQ(m.all.accurate[0], 1.0);
+  EXPECT_DOUBLE_EQ(m.all.accurate_abs[0], 1.0);
+  EXPECT_DOUBLE_EQ(m.all.complete[1], 32.0 / 40.0);
+  EXPECT_DOUBLE_EQ(m.all.median_normal_error_deg, 0.0);  // no ground-truth normals
+}
+
 TEST(EvaluateDepthMap, SmallerPredictionSamplesGroundTruthNearest) {
   const GroundTruth gt;
   // Half resolution: predicted pixel (r, c) sits at GT pixel (2r, 2c).
@@ -131,9 +168,8 @@ TEST(EvaluateDepthMap, EmptyEdgeMasksHoldNoPixel) {
 TEST(EvaluateDepthMap, MaskOfAnotherSizeIsAnError) {
   GroundTruth gt;
   gt.masks.near_edge = cv::Mat(3, 4, CV_8UC1, cv::Scalar(255));
-  EXPECT_THROW(
-      EvaluateDepthMap(gt.depth, DenseMap(), gt.depth, gt.normal, gt.masks, kThresholds),
-      std::invalid_argument);
+  EXPECT_THROW(EvaluateDepthMap(gt.depth, DenseMap(), gt.depth, gt.normal, gt.masks, kThresholds),
+               std::invalid_argument);
 }
 
 TEST(AverageMetrics, MeansPerImageFigures) {

@@ -69,8 +69,7 @@ TEST(EvaluateReport, EdgeRegionsInTextAndJson) {
   std::ostringstream out;
   PrintReport(r, out);
   EXPECT_NE(out.str().find("pixels near a depth edge,"), std::string::npos) << out.str();
-  EXPECT_NE(out.str().find("pixels near a depth edge between alike colours,"),
-            std::string::npos);
+  EXPECT_NE(out.str().find("pixels near a depth edge between alike colours,"), std::string::npos);
   EXPECT_NE(out.str().find("within 8 ground-truth pixels"), std::string::npos);
   const std::string json = ReportJson(r);
   EXPECT_NE(json.find("\"edge_band_radius\": 8, \"all\": "), std::string::npos) << json;
@@ -80,6 +79,57 @@ TEST(EvaluateReport, EdgeRegionsInTextAndJson) {
   ASSERT_NE(average, std::string::npos);
   EXPECT_NE(json.find("\"near_edge\": {\"num_gt\": 17,", average), std::string::npos);
   EXPECT_NE(json.find("\"alike_edge\": {\"num_gt\": 5,", average), std::string::npos);
+}
+
+TEST(EvaluateReport, AbsoluteThresholdsInTextAndJson) {
+  EvaluationResult r = TwoImages();
+  r.maps[0].all.complete_abs[0] = 0.25;
+  r.maps[0].all.accurate_abs[1] = 0.75;
+  r.average = AverageMetrics(r.maps);
+  r.has_cloud = true;
+  r.cloud.num_points = 10;
+  r.cloud.num_judged = 8;
+  CloudThresholdMetrics t;
+  t.metres = 0.05;
+  t.absolute = true;
+  r.cloud.thresholds = {t};
+  std::ostringstream out;
+  PrintReport(r, out);
+  EXPECT_NE(out.str().find("0.02 m / 0.05 m absolute (cmpA1, cmpA2, accA1, accA2)"),
+            std::string::npos)
+      << out.str();
+  EXPECT_NE(out.str().find("10 points, 8 judged"), std::string::npos);
+  EXPECT_NE(out.str().find("\n0.0500 m "), std::string::npos);
+  const std::string json = ReportJson(r);
+  EXPECT_NE(json.find("\"absolute_thresholds_metres\": [0.02, 0.05]"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"complete_abs_1\": 0.25,"), std::string::npos);
+  EXPECT_NE(json.find("\"accurate_abs_2\": 0.75,"), std::string::npos);
+  EXPECT_NE(json.find("\"num_judged\": 8"), std::string::npos);
+  EXPECT_NE(json.find("\"metres\": 0.05, \"absolute\": true"), std::string::npos);
+}
+
+// Sensor ground truth states its source and rules; without textureless masks
+// the textureless / textured tables are left out (null in the JSON), without
+// normals the normal error reads n/a.
+TEST(EvaluateReport, SaysWhatTheGroundTruthLacks) {
+  EvaluationResult r = TwoImages();
+  r.info.depth_source = "sensor";
+  r.info.has_textureless = false;
+  r.info.has_normals = false;
+  std::ostringstream out;
+  PrintReport(r, out);
+  const std::string text = out.str();
+  EXPECT_NE(text.find("Ground-truth depth: sensor; pixels without a measurement (0) count "
+                      "neither way"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("No textureless masks"), std::string::npos);
+  EXPECT_NE(text.find("No ground-truth normals"), std::string::npos);
+  EXPECT_EQ(text.find("textureless pixels only"), std::string::npos);
+  EXPECT_NE(text.find("n/a\n"), std::string::npos);
+  const std::string json = ReportJson(r);
+  EXPECT_NE(json.find("\"textureless\": null, \"textured\": null"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"has_normals\": false"), std::string::npos);
 }
 
 }  // namespace

@@ -1,0 +1,48 @@
+# shellcheck shell=bash
+# The rows of the MSP-MVS ablation in the shape of the paper's Table 3, shared
+# by bench/table3.sh (the bundled scene) and bench/real_gt.sh (real frames
+# with sensor ground truth). Sourcing it sets `rows`, one "id|label|options"
+# a row.
+
+# The parts of the method, each switched off.
+NO_PRIOR="--MspStereo.segmentation_prior false"
+NO_AGR="--MspStereo.edge_aggregation false"
+NO_REF="--MspStereo.edge_refinement false"
+NO_GEO="--MspStereo.geometry_layers false"
+NO_EQD="--MspStereo.equidistribution false"
+NO_CLU="--MspStereo.disassemble_clustering false"
+NO_SYN="--MspStereo.synergistic_optimization false"
+
+# id | label | options. From the baseline to `full` each row adds one part to
+# the row above (segment planes, our own step, stay on throughout); the last
+# three take one piece out of the full method's 3D optimization.
+rows=(
+  "baseline|APD-MVS baseline|$NO_PRIOR $NO_EQD $NO_CLU $NO_SYN"
+  "prior|+ prior: colour layers, union of their edges|$NO_AGR $NO_REF $NO_GEO $NO_EQD $NO_CLU $NO_SYN"
+  "aggregation|+ edge aggregation (eqs. 4-5)|$NO_REF $NO_GEO $NO_EQD $NO_CLU $NO_SYN"
+  "refinement|+ edge refinement (CRF, eq. 6)|$NO_GEO $NO_EQD $NO_CLU $NO_SYN"
+  "geometry|+ geometry layers|$NO_EQD $NO_CLU $NO_SYN"
+  "equidistribution|+ adaptive equidistribution (eq. 7)|$NO_CLU $NO_SYN"
+  "clustering|+ disassemble-clustering|$NO_SYN"
+  "full|+ 3D optimization (eqs. 8-9) = MSP-MVS|"
+  "novar|MSP-MVS w/o Var. (omega = 0)|--MspStereo.variance_weight 0"
+  "nocost|MSP-MVS w/o Cst.|--MspStereo.profile_cost_term false"
+  "mu3|MSP-MVS, mu = 3|--MspStereo.disparity_samples 3"
+)
+
+# plan_fields ROW: sets `id`, `label` and the array `options` from an
+# "id|label|options" row.
+plan_fields() {
+  id=${1%%|*}
+  local rest=${1#*|}
+  label=${rest%%|*}
+  read -r -a options <<< "${rest#*|}"
+}
+
+# table3_row ID: the row's "id|label|options", or nothing.
+table3_row() {
+  local row
+  for row in "${rows[@]}"; do
+    [ "${row%%|*}" = "$1" ] && { echo "$row"; return; }
+  done
+}

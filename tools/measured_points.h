@@ -1,0 +1,32 @@
+// Which reconstructed points the ground truth can judge. Sensor depth has no
+// measurement on dark, shiny or distant surfaces (value 0), so a fused point
+// there is no evidence either way: counting it as wrong would punish a method
+// for reconstructing what the sensor missed, counting it as right would
+// reward anything. The rule: a point is judged when at least one
+// ground-truth view has a measurement where the point projects (in front of
+// the camera, inside the image, ground-truth depth > 0 at the nearest pixel).
+// For rendered ground truth, which has depth at every pixel, every point any
+// view sees is judged.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "base/dense_map.h"
+#include "core/math/camera.h"
+
+namespace msp {
+namespace eval {
+
+struct MeasuredView {
+  core::Camera camera;  // at the ground truth's size, COLMAP MVS pixel convention
+  DenseMap depth;       // ground-truth depth, 0 = no measurement
+};
+
+// One flag per point: 1 = judged.
+std::vector<uint8_t> MeasuredPoints(const std::vector<Eigen::Vector3f>& points,
+                                    const std::vector<MeasuredView>& views);
+
+}  // namespace eval
+}  // namespace msp

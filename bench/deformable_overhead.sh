@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # What deformable patch matching costs over the conventional core on one
-# workspace: runs the default options and `--MspStereo.deformable false`,
+# workspace: runs `--MspStereo.deformable true` and `--MspStereo.deformable false`,
 # each on a fresh copy, and prints wall and user CPU seconds of every run, the
 # ratio of each pair and the median of the ratios. On a shared machine the
 # speed drifts between runs by more than the margin being measured: compare
@@ -13,7 +13,7 @@
 # the same machine: a drift then slows both alike and leaves the ratio. When
 # the first of the two ends, a filler run takes its core until the other ends,
 # so that neither finishes alone on a quieter machine (which would flatter it).
-# The default run is the more sensitive to what runs beside it, so pairs one
+# The deformable run ("default" below) is the more sensitive to what runs beside it, so pairs one
 # after the other are the fairer measure of what a user sees.
 #
 # <workspace> is a dense workspace such as msp_make_scene writes; it is not
@@ -51,7 +51,7 @@ set -m
 echo "pair  default: wall s  user s  peak MiB | conventional: wall s  user s  peak MiB | ratio wall  user"
 for ((k = 1; k <= pairs; ++k)); do
   if [ "$concurrent" = 1 ]; then
-    run default --MspStereo.num_threads 1 "$@" &
+    run default --MspStereo.deformable true --MspStereo.num_threads 1 "$@" &
     default_pid=$!
     run conventional --MspStereo.deformable false --MspStereo.num_threads 1 "$@" &
     conventional_pid=$!
@@ -64,7 +64,7 @@ for ((k = 1; k <= pairs; ++k)); do
     kill -- "-$filler_pid" 2> /dev/null || true
     wait "$filler_pid" 2> /dev/null || true
   else
-    run default "$@"
+    run default --MspStereo.deformable true "$@"
     run conventional --MspStereo.deformable false "$@"
   fi
   read -r dw du dm < "$scratch/default.time"

@@ -13,10 +13,10 @@
 #
 # <rgbd dir> holds images/, depth/ (16-bit PNGs, millimetres), K.txt and
 # poses.txt, as ../shared/data/office-rgbd does. Rows (--rows, comma-separated,
-# in this order): default (the whole method), conventional (--MspStereo.deformable
-# false: the conventional patch-match core), and the Table 3 rows of
+# in this order): default (the default options: the conventional patch-match
+# core), method (--MspStereo.deformable true: the whole MSP-MVS method), and the Table 3 rows of
 # bench/lib/table3_rows.sh by id (baseline = APD-MVS, novar, ...); the default
-# set is default,conventional,baseline. --keep DIR keeps the imported workspace
+# set is default,method,baseline. --keep DIR keeps the imported workspace
 # and each row's maps, fused cloud, previews and evaluation in DIR/<row>.
 # Frames: $RGBD_FRAMES (default 0-8,35-39), depth units $RGBD_UNITS (1000).
 # Binaries from $MSP_BIN (default build/bin); colmap from $COLMAP (/usr/bin/colmap).
@@ -26,7 +26,7 @@ source "$(dirname "$0")/lib/run_row.sh"
 # shellcheck source=bench/lib/table3_rows.sh
 source "$(dirname "$0")/lib/table3_rows.sh"
 
-selected="default,conventional,baseline"
+selected="default,method,baseline"
 bundled=1
 keep=""
 while [ $# -gt 0 ]; do
@@ -54,8 +54,8 @@ trap 'rm -rf "$top"' EXIT
 plans=()
 for id in ${selected//,/ }; do
   case "$id" in
-    default) plans+=("default|MSP-MVS (default options)|") ;;
-    conventional) plans+=("conventional|conventional core (deformable false)|--MspStereo.deformable false") ;;
+    default) plans+=("default|default options (conventional core)|") ;;
+    method) plans+=("method|MSP-MVS (deformable true)|--MspStereo.deformable true") ;;
     *)
       row=$(table3_row "$id")
       [ -n "$row" ] || { echo "--rows: no row \`$id\`" >&2; exit 1; }

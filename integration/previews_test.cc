@@ -43,7 +43,9 @@ constexpr int kNumViews = 4;
 
 const std::string kBin = MSP_BIN_DIR;
 const std::string kStereoWithPreviews =
-    kBin + "/msp_stereo --PatchMatchStereo.max_image_size 160 --MspStereo.write_previews 1";
+    kBin +
+    "/msp_stereo --PatchMatchStereo.max_image_size 160 --MspStereo.write_previews 1 "
+    "--MspStereo.deformable 1";  // the prior, whose edges the prior preview shows
 
 // The bundled scene, as msp_make_scene renders it, in `ws`.
 void MakeScene(const std::string& ws, uint64_t seed, int width, int height, int num_cameras) {

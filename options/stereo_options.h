@@ -131,8 +131,10 @@ struct MspStereoOptions {
   int window_step = 2;
   // Bilateral NCC weights (COLMAP's sigma_spatial, sigma_color) instead of APD-MVS's uniform ones.
   bool bilateral_ncc = false;
-  // Deformable patches of APD-MVS: unreliable pixels match over reliable anchors; false = plain PM.
-  bool deformable = true;
+  // Deformable patches of APD-MVS, and with them every part MSP-MVS adds (prior, eq. 7,
+  // clustering, 3D optimization): unreliable pixels match over reliable anchors. Off by default:
+  // on the benchmarks it has not paid yet (docs/method.md section 9); false = the conventional core.
+  bool deformable = false;
   // After each pass, matched edge pixels give each colour segment a plane that its textureless
   // pixels take (docs/method.md section 2.10); false = no segment planes.
   bool segment_planes = true;
@@ -196,7 +198,7 @@ struct MspStereoOptions {
   // The paper's iterative local search: in every iteration the solution in use competes with J
   // perturbations of itself (one sub-patch re-sampled each); false = J independent draws once per
   // pass that replace it.
-  bool sampling_local_search = false;
+  bool sampling_local_search = true;
   // mu: disparities of a cost profile (odd).
   int disparity_samples = 5;
   // delta: step between the profile's disparities, in pixels of disparity.

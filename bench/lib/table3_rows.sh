@@ -4,6 +4,9 @@
 # with sensor ground truth). Sourcing it sets `rows`, one "id|label|options"
 # a row.
 
+# Deformable patches, which every part of the method runs in: off by default
+# (docs/method.md section 9), so every row turns them on.
+METHOD="--MspStereo.deformable true"
 # The parts of the method, each switched off.
 NO_PRIOR="--MspStereo.segmentation_prior false"
 NO_AGR="--MspStereo.edge_aggregation false"
@@ -17,17 +20,17 @@ NO_SYN="--MspStereo.synergistic_optimization false"
 # the row above (segment planes, our own step, stay on throughout); the last
 # three take one piece out of the full method's 3D optimization.
 rows=(
-  "baseline|APD-MVS baseline|$NO_PRIOR $NO_EQD $NO_CLU $NO_SYN"
-  "prior|+ prior: colour layers, union of their edges|$NO_AGR $NO_REF $NO_GEO $NO_EQD $NO_CLU $NO_SYN"
-  "aggregation|+ edge aggregation (eqs. 4-5)|$NO_REF $NO_GEO $NO_EQD $NO_CLU $NO_SYN"
-  "refinement|+ edge refinement (CRF, eq. 6)|$NO_GEO $NO_EQD $NO_CLU $NO_SYN"
-  "geometry|+ geometry layers|$NO_EQD $NO_CLU $NO_SYN"
-  "equidistribution|+ adaptive equidistribution (eq. 7)|$NO_CLU $NO_SYN"
-  "clustering|+ disassemble-clustering|$NO_SYN"
-  "full|+ 3D optimization (eqs. 8-9) = MSP-MVS|"
-  "novar|MSP-MVS w/o Var. (omega = 0)|--MspStereo.variance_weight 0"
-  "nocost|MSP-MVS w/o Cst.|--MspStereo.profile_cost_term false"
-  "mu3|MSP-MVS, mu = 3|--MspStereo.disparity_samples 3"
+  "baseline|APD-MVS baseline|$METHOD $NO_PRIOR $NO_EQD $NO_CLU $NO_SYN"
+  "prior|+ prior: colour layers, union of their edges|$METHOD $NO_AGR $NO_REF $NO_GEO $NO_EQD $NO_CLU $NO_SYN"
+  "aggregation|+ edge aggregation (eqs. 4-5)|$METHOD $NO_REF $NO_GEO $NO_EQD $NO_CLU $NO_SYN"
+  "refinement|+ edge refinement (CRF, eq. 6)|$METHOD $NO_GEO $NO_EQD $NO_CLU $NO_SYN"
+  "geometry|+ geometry layers|$METHOD $NO_EQD $NO_CLU $NO_SYN"
+  "equidistribution|+ adaptive equidistribution (eq. 7)|$METHOD $NO_CLU $NO_SYN"
+  "clustering|+ disassemble-clustering|$METHOD $NO_SYN"
+  "full|+ 3D optimization (eqs. 8-9) = MSP-MVS|$METHOD"
+  "novar|MSP-MVS w/o Var. (omega = 0)|$METHOD --MspStereo.variance_weight 0"
+  "nocost|MSP-MVS w/o Cst.|$METHOD --MspStereo.profile_cost_term false"
+  "mu3|MSP-MVS, mu = 3|$METHOD --MspStereo.disparity_samples 3"
 )
 
 # plan_fields ROW: sets `id`, `label` and the array `options` from an

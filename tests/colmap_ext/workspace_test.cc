@@ -373,6 +373,7 @@ TEST(Workspace, ReadsPriorMaskLayersOfReferenceViews) {
     test::WriteImage(tiny.Path("masks/sub/img0.png." + std::to_string(level) + ".png"), layer);
   }
   StereoCommandOptions options = tiny.Options();
+  options.msp.deformable = true;            // the prior needs deformable patches
   options.patch_match.max_image_size = 16;  // 32x24 -> 16x12
   const Workspace ws = LoadWorkspace(options);
   const ImageLabelLayers& given = ws.views[0].mask_layers;

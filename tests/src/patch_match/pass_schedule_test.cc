@@ -10,6 +10,14 @@
 namespace msp {
 namespace {
 
+// The default options with deformable patches on (off by default), whose
+// schedule and outputs these tests pin down.
+MspStereoOptions WithDeformable() {
+  MspStereoOptions msp;
+  msp.deformable = true;
+  return msp;
+}
+
 // The bundled scene at --PatchMatchStereo.max_image_size 320.
 constexpr int kSceneWidth = 320;
 constexpr int kSceneHeight = 240;
@@ -17,7 +25,7 @@ constexpr int kSceneHeight = 240;
 // Options whose pyramid has one round at the scene's size, with the
 // deformable step at any size and the finest round's own narrowing off.
 MspStereoOptions OneRound() {
-  MspStereoOptions msp;
+  MspStereoOptions msp = WithDeformable();
   msp.coarsest_image_size = 1000;
   msp.deformable_max_image_size = 0;
   msp.weighted_views_only = false;
@@ -45,9 +53,19 @@ TEST(PassSchedule, OneRound) {
             "(classes from the refine); refine; segment planes; writes final maps\n");
 }
 
-// Default options at 320 x 240: 320 -> 160 -> 80; the finest round restores
-// detail with one conventional iteration per pass.
-TEST(PassSchedule, DefaultOptionsRestoreDetailInTheFinestRound) {
+// Default options run the conventional core: no deformable pass, no prior.
+TEST(PassSchedule, DefaultOptionsRunNoDeformablePassAndNoPrior) {
+  for (const Pass& pass :
+       BuildPassSchedule(PatchMatchStereoOptions(), MspStereoOptions(), 640, 480)) {
+    EXPECT_EQ(pass.sweeps, PassSweeps::kCheckerboard) << ToString(pass);
+    EXPECT_FALSE(pass.prior) << ToString(pass);
+    EXPECT_FALSE(pass.refine_classifies) << ToString(pass);
+  }
+}
+
+// The method's options at 320 x 240: 320 -> 160 -> 80; the finest round
+// restores detail with one conventional iteration per pass.
+TEST(PassSchedule, TheMethodRestoresDetailInTheFinestRound) {
   const std::string round1 =
       "round 1/3 (scale 1/4), pass 1 photometric (id 0): random start; 3 x checkerboard; "
       "refine + classify; segment planes\n"
@@ -76,13 +94,13 @@ TEST(PassSchedule, DefaultOptionsRestoreDetailInTheFinestRound) {
       "selected views; refine; segment planes\n"
       "round 3/3 (scale 1/1), pass 4 geometric (id 19): previous state; 1 x checkerboard on the "
       "selected views; refine; segment planes; writes final maps\n";
-  EXPECT_EQ(Printed(PatchMatchStereoOptions(), MspStereoOptions()), round1 + round2 + round3);
+  EXPECT_EQ(Printed(PatchMatchStereoOptions(), WithDeformable()), round1 + round2 + round3);
 }
 
 // weighted_views_only narrows the propagation of the finest round only,
 // whose selections the coarser rounds settled; never with one round.
 TEST(PassSchedule, WeightedViewsOnlyInTheFinestRound) {
-  MspStereoOptions msp;
+  MspStereoOptions msp = WithDeformable();
   msp.weighted_views_only = true;
   const std::vector<Pass> schedule =
       BuildPassSchedule(PatchMatchStereoOptions(), msp, kSceneWidth, kSceneHeight);
@@ -90,14 +108,14 @@ TEST(PassSchedule, WeightedViewsOnlyInTheFinestRound) {
   for (const Pass& pass : schedule) {
     EXPECT_EQ(pass.weighted_views_only, pass.round == 2) << ToString(pass);
   }
-  EXPECT_NE(Printed(PatchMatchStereoOptions(), msp).find(
-                "round 3/3 (scale 1/1), pass 1 photometric (id 16): upsampled state; 1 x "
-                "checkerboard on the selected views;"),
+  EXPECT_NE(Printed(PatchMatchStereoOptions(), msp)
+                .find("round 3/3 (scale 1/1), pass 1 photometric (id 16): upsampled state; 1 x "
+                      "checkerboard on the selected views;"),
             std::string::npos);
   MspStereoOptions one_round = OneRound();
   one_round.weighted_views_only = true;
-  for (const Pass& pass : BuildPassSchedule(PatchMatchStereoOptions(), one_round, kSceneWidth,
-                                            kSceneHeight)) {
+  for (const Pass& pass :
+       BuildPassSchedule(PatchMatchStereoOptions(), one_round, kSceneWidth, kSceneHeight)) {
     EXPECT_FALSE(pass.weighted_views_only);
   }
 }
@@ -106,7 +124,7 @@ TEST(PassSchedule, WeightedViewsOnlyInTheFinestRound) {
 // several each take their own; a round's first deformable pass classifies
 // with the thresholds after the coarser round's last pass.
 TEST(PassSchedule, PassesAndIterationsPerRound) {
-  MspStereoOptions msp;
+  MspStereoOptions msp = WithDeformable();
   msp.geometric_passes = 2;
   msp.finest_geometric_passes = 1;
   msp.iterations = 2;
@@ -122,8 +140,8 @@ TEST(PassSchedule, PassesAndIterationsPerRound) {
     EXPECT_EQ(pass.index, pass.round == 2 ? static_cast<int>(&pass - &schedule[6])
                                           : static_cast<int>(&pass - &schedule[3 * pass.round]));
   }
-  EXPECT_EQ(schedule[3].classify_after, 2);  // round 2 after round 1's third pass
-  EXPECT_EQ(schedule[6].classify_after, 2);  // round 3 after round 2's third pass
+  EXPECT_EQ(schedule[3].classify_after, 2);             // round 2 after round 1's third pass
+  EXPECT_EQ(schedule[6].classify_after, 2);             // round 3 after round 2's third pass
   EXPECT_TRUE(schedule[5].refine_classifies == false);  // a round's last pass
   EXPECT_EQ(schedule.back().output, PassOutput::kFinal);
   EXPECT_EQ(schedule[6].output, PassOutput::kUnfiltered);
@@ -132,7 +150,7 @@ TEST(PassSchedule, PassesAndIterationsPerRound) {
 // Rounds above deformable_max_image_size run the conventional sweeps, and
 // the prior (which confines anchors) runs only after deformable passes.
 TEST(PassSchedule, DeformableOnlyUpToAnImageSize) {
-  MspStereoOptions msp;
+  MspStereoOptions msp = WithDeformable();
   msp.deformable_max_image_size = 160;
   msp.finest_deformable = true;
   const std::vector<Pass> schedule = BuildPassSchedule(PatchMatchStereoOptions(), msp, 640, 480);
@@ -195,7 +213,7 @@ TEST(PassSchedule, ClassesAndIdsAreConsistent) {
     for (const int variant : {0, 1, 2}) {
       PatchMatchStereoOptions pm;
       pm.geom_consistency = geom;
-      MspStereoOptions msp;
+      MspStereoOptions msp = WithDeformable();
       msp.deformable = variant != 0;
       msp.finest_deformable = variant == 2;
       // 4000 -> 2000 -> ... -> 62: seven rounds.

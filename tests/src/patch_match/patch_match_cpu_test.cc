@@ -17,6 +17,14 @@
 namespace msp {
 namespace {
 
+// The default options with deformable patches on (off by default), whose
+// schedule and outputs these tests pin down.
+MspStereoOptions WithDeformable() {
+  MspStereoOptions msp;
+  msp.deformable = true;
+  return msp;
+}
+
 // Keeps every written map in memory.
 class MemorySink : public MapSink {
  public:
@@ -73,7 +81,7 @@ TEST(PatchMatchCpu, RecoversFrontoParallelPlane) {
   const std::vector<View> views = test::RenderFrontoParallelPlane(96, 72, 4, kPlaneDepth, 0.25f);
   const std::vector<Problem> problems = AllProblems(4);
   PatchMatchStereoOptions pm;
-  MspStereoOptions msp;
+  MspStereoOptions msp = WithDeformable();
   msp.num_threads = 2;
   MemorySink sink;
   const test::TempDir scratch;
@@ -113,7 +121,7 @@ TEST(PatchMatchCpu, DeterministicAcrossThreadCountsWithAndWithoutPrior) {
   PatchMatchStereoOptions pm;
   const test::TempDir scratch;
   for (bool prior : {true, false}) {
-    MspStereoOptions msp;
+    MspStereoOptions msp = WithDeformable();
     msp.seed = 3;
     msp.segmentation_prior = prior;
     msp.segmenter = "embedded";
@@ -149,7 +157,7 @@ TEST(PatchMatchCpu, DeterministicWithBothSegmentersAndGeometryLayers) {
   for (const char* segmenter : {"opencv", "embedded"}) {
     for (bool geometry : {true, false}) {
       SCOPED_TRACE(std::string(segmenter) + (geometry ? " with" : " without") + " geometry layers");
-      MspStereoOptions msp;
+      MspStereoOptions msp = WithDeformable();
       msp.seed = 5;
       msp.segmenter = segmenter;
       msp.geometry_layers = geometry;
@@ -181,7 +189,7 @@ TEST(PatchMatchCpu, UserMaskLayersAreUsedOverTheEmbeddedSegmenter) {
   views[0].mask_layers.source = LabelSource::kMaskFiles;
   views[0].mask_layers.layers = layers;
   PatchMatchStereoOptions pm;
-  MspStereoOptions msp;
+  MspStereoOptions msp = WithDeformable();
   msp.write_previews = true;
   msp.edge_refinement = false;  // B' itself confines
   MemorySink sink;
@@ -212,7 +220,7 @@ TEST(PatchMatchCpu, SpillingStateGivesIdenticalMaps) {
   const std::vector<View> views = test::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
   const std::vector<Problem> problems = AllProblems(3);
   PatchMatchStereoOptions pm;
-  MspStereoOptions msp;
+  MspStereoOptions msp = WithDeformable();
   MemorySink in_memory, spilled;
   const test::TempDir scratch;
   RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), in_memory);
@@ -239,7 +247,7 @@ TEST(PatchMatchCpu, ImagesReadOnDemandGiveIdenticalMaps) {
     };
   }
   PatchMatchStereoOptions pm;
-  MspStereoOptions msp;
+  MspStereoOptions msp = WithDeformable();
   const test::TempDir scratch;
   MemorySink in_memory;
   RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), in_memory);
@@ -264,7 +272,7 @@ TEST(PatchMatchCpu, MapPreviewsShowTheFinalMapsWithOrWithoutThePrior) {
   const test::TempDir scratch;
   for (bool deformable : {true, false}) {
     SCOPED_TRACE(deformable ? "deformable" : "conventional");
-    MspStereoOptions msp;
+    MspStereoOptions msp = WithDeformable();
     msp.deformable = deformable;
     msp.write_previews = true;
     MemorySink sink;
@@ -278,7 +286,7 @@ TEST(PatchMatchCpu, MapPreviewsShowTheFinalMapsWithOrWithoutThePrior) {
     }
     EXPECT_EQ(sink.previews.size(), deformable ? 2u : 0u);  // the prior's own preview
   }
-  MspStereoOptions msp;
+  MspStereoOptions msp = WithDeformable();
   msp.deformable = false;
   MemorySink sink;
   RunPatchMatchCpu(views, AllProblems(3), pm, msp, scratch.path(), sink);
@@ -290,7 +298,7 @@ TEST(PatchMatchCpu, MapPreviewsShowTheFinalMapsWithOrWithoutThePrior) {
 // pass barriers: each writes only its images' maps, and those are the maps
 // of the run in one process, bit for bit.
 TEST(PatchMatchCpu, ShardsTogetherGiveTheOneProcessMaps) {
-  MspStereoOptions msp;
+  MspStereoOptions msp = WithDeformable();
   msp.seed = 5;
   msp.num_threads = 1;
   const PatchMatchStereoOptions pm;
@@ -310,8 +318,8 @@ TEST(PatchMatchCpu, ShardsTogetherGiveTheOneProcessMaps) {
       run.shard = ShardSpec{k, 2};
       run.timeout_seconds = 120;
       run.name = "shard " + std::to_string(k) + "/2";
-      RunPatchMatchCpu(views, problems, pm, msp, scratch / ("shard" + std::to_string(k)),
-                       sinks[k], &run);
+      RunPatchMatchCpu(views, problems, pm, msp, scratch / ("shard" + std::to_string(k)), sinks[k],
+                       &run);
     });
   }
   for (std::thread& shard : shards) shard.join();
@@ -345,7 +353,7 @@ TEST(PatchMatchCpu, PixelsWithNothingToMatchGetNoDepth) {
   }
   const auto geometric_depth = [&](double black_level) {
     PatchMatchStereoOptions pm;
-    MspStereoOptions msp;
+    MspStereoOptions msp = WithDeformable();
     msp.num_threads = 2;
     msp.black_level = black_level;
     MemorySink sink;
@@ -378,7 +386,7 @@ TEST(PatchMatchCpu, SkipsImagesWithFinalOutputs) {
   const std::vector<View> views = test::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
   PatchMatchStereoOptions pm;
   pm.geom_consistency = false;
-  MspStereoOptions msp;
+  MspStereoOptions msp = WithDeformable();
   MemorySink sink;
   for (int v = 0; v < 3; ++v) sink.done[v] = true;
   const test::TempDir scratch;

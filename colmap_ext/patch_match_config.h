@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/mvs_input.h"
 #include "colmap_ext/sparse_model.h"
 
 namespace msp {
@@ -44,5 +45,14 @@ std::vector<std::vector<int>> SelectAutoSourcesBatch(const SparseModel& model,
 std::pair<double, double> ComputeDepthRange(const SparseModel& model, int image_index);
 // ComputeDepthRange of every model image, in one pass over the points.
 std::vector<std::pair<double, double>> ComputeDepthRanges(const SparseModel& model);
+
+// The same rule over more evidence, per problem: the points observed by its
+// reference or by any of its sources that lie in front of the reference and
+// project inside its image. Where the reference's own tracks are few (blurred
+// or textureless frames), its sources' tracks on the surfaces they share with
+// it widen the range to what it sees. {-1, -1} when no such point exists.
+// Each problem visits only its views' observations.
+std::vector<std::pair<double, double>> ComputeSharedDepthRanges(
+    const SparseModel& model, const std::vector<Problem>& problems);
 
 }  // namespace msp

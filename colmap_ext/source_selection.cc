@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "colmap_ext/patch_match_config.h"
+#include "colmap_ext/workspace.h"
+#include "core/math/vec.h"
 
 namespace msp {
 namespace {
@@ -24,6 +26,16 @@ constexpr double kTriangulationAnglePercentile = 75.0;
 constexpr float kMinDepthPercentile = 0.01f;
 constexpr float kMaxDepthPercentile = 0.99f;
 constexpr float kDepthStretch = 0.25f;
+
+// The percentile rule of COLMAP's depth ranges on `d` (sorted here), in
+// float arithmetic as COLMAP so that the chosen indices agree exactly.
+std::pair<double, double> RobustRange(std::vector<float>* d) {
+  if (d->empty()) return {-1.0, -1.0};
+  std::sort(d->begin(), d->end());
+  const size_t min_idx = static_cast<size_t>(d->size() * kMinDepthPercentile);
+  const size_t max_idx = static_cast<size_t>(d->size() * kMaxDepthPercentile);
+  return {(*d)[min_idx] * (1.0f - kDepthStretch), (*d)[max_idx] * (1.0f + kDepthStretch)};
+}
 
 Eigen::Matrix3d Rotation(const SparseImage& image) {
   const Eigen::Quaterniond q(image.qvec[0], image.qvec[1], image.qvec[2], image.qvec[3]);
@@ -194,14 +206,60 @@ std::vector<std::pair<double, double>> ComputeDepthRanges(const SparseModel& mod
   }
 
   std::vector<std::pair<double, double>> ranges(num_images, {-1.0, -1.0});
-  for (size_t i = 0; i < num_images; ++i) {
-    std::vector<float>& d = depths[i];
-    if (d.empty()) continue;
-    std::sort(d.begin(), d.end());
-    // Float arithmetic as in COLMAP so the chosen indices agree exactly.
-    const size_t min_idx = static_cast<size_t>(d.size() * kMinDepthPercentile);
-    const size_t max_idx = static_cast<size_t>(d.size() * kMaxDepthPercentile);
-    ranges[i] = {d[min_idx] * (1.0f - kDepthStretch), d[max_idx] * (1.0f + kDepthStretch)};
+  for (size_t i = 0; i < num_images; ++i) ranges[i] = RobustRange(&depths[i]);
+  return ranges;
+}
+
+std::vector<std::pair<double, double>> ComputeSharedDepthRanges(
+    const SparseModel& model, const std::vector<Problem>& problems) {
+  const int num_images = static_cast<int>(model.images.size());
+  const std::unordered_map<uint32_t, int> index_of = ImageIndexById(model);
+  // The points each image observes, once per point.
+  std::vector<std::vector<int>> points_of(num_images);
+  for (size_t k = 0; k < model.points3D.size(); ++k) {
+    for (const TrackElement& element : model.points3D[k].track) {
+      const auto it = index_of.find(element.image_id);
+      if (it == index_of.end()) continue;
+      std::vector<int>& points = points_of[it->second];
+      if (points.empty() || points.back() != static_cast<int>(k)) {
+        points.push_back(static_cast<int>(k));
+      }
+    }
+  }
+  std::unordered_map<uint32_t, const SparseCamera*> camera_of;
+  for (const SparseCamera& c : model.cameras) camera_of[c.camera_id] = &c;
+  std::vector<int> stamp(model.points3D.size(), -1);  // the last problem that took the point
+  std::vector<std::pair<double, double>> ranges(problems.size(), {-1.0, -1.0});
+  for (size_t p = 0; p < problems.size(); ++p) {
+    const Problem& problem = problems[p];
+    if (problem.ref < 0 || problem.ref >= num_images) continue;
+    const SparseImage& image = model.images[problem.ref];
+    const auto camera = camera_of.find(image.camera_id);
+    if (camera == camera_of.end()) continue;
+    const core::Camera cam = MakeCoreCamera(*camera->second, image);
+    std::vector<int> views = problem.srcs;
+    views.push_back(problem.ref);
+    std::vector<float> depths;
+    for (int v : views) {
+      if (v < 0 || v >= num_images) continue;
+      for (int k : points_of[v]) {
+        if (stamp[k] == static_cast<int>(p)) continue;
+        stamp[k] = static_cast<int>(p);
+        const double* xyz = model.points3D[k].xyz;
+        const core::Vec3 X{static_cast<float>(xyz[0]), static_cast<float>(xyz[1]),
+                           static_cast<float>(xyz[2])};
+        const core::Vec3 Xc = core::Mul(cam.R, X) + cam.t;
+        if (!(Xc.z > 0.0f)) continue;
+        const float u = cam.fx * Xc.x / Xc.z + cam.cx;
+        const float w = cam.fy * Xc.y / Xc.z + cam.cy;
+        if (u < 0.0f || w < 0.0f || u > static_cast<float>(cam.width) ||
+            w > static_cast<float>(cam.height)) {
+          continue;
+        }
+        depths.push_back(Xc.z);
+      }
+    }
+    ranges[p] = RobustRange(&depths);
   }
   return ranges;
 }

@@ -167,8 +167,8 @@ std::vector<Problem> HandleMissingImages(std::vector<Problem> problems, const Wo
   return kept;
 }
 
-void AssignDepthRanges(const PatchMatchStereoOptions& options, const Workspace& ws,
-                       std::vector<Problem>* problems) {
+void AssignDepthRanges(const PatchMatchStereoOptions& options, bool from_sources,
+                       const Workspace& ws, std::vector<Problem>* problems) {
   if (options.depth_min > 0.0 && options.depth_max > 0.0) {
     if (options.depth_min >= options.depth_max) {
       throw InputError(MSP_OPTION_FLAG(options, depth_min) + " (" +
@@ -182,9 +182,13 @@ void AssignDepthRanges(const PatchMatchStereoOptions& options, const Workspace& 
     }
     return;
   }
-  const std::vector<std::pair<double, double>> ranges = ComputeDepthRanges(ws.model);
-  for (Problem& problem : *problems) {
-    const auto& range = ranges[problem.ref];
+  const std::vector<std::pair<double, double>> own = ComputeDepthRanges(ws.model);
+  const std::vector<std::pair<double, double>> shared =
+      from_sources ? ComputeSharedDepthRanges(ws.model, *problems)
+                   : std::vector<std::pair<double, double>>();
+  for (size_t p = 0; p < problems->size(); ++p) {
+    Problem& problem = (*problems)[p];
+    const auto& range = from_sources ? shared[p] : own[problem.ref];
     if (!(range.first > 0.0 && range.second > 0.0)) {
       throw InputError("no depth range: set " + MSP_OPTION_FLAG(options, depth_min) + " and " +
                        MSP_OPTION_FLAG(options, depth_max) +
@@ -298,7 +302,7 @@ Workspace LoadWorkspace(const StereoCommandOptions& options) {
       ResolveProblems(ParsePatchMatchConfig(cfg_path), ws.model, cfg_path,
                       options.patch_match.min_triangulation_angle);
   problems = HandleMissingImages(std::move(problems), ws, options.patch_match.allow_missing_files);
-  AssignDepthRanges(options.patch_match, ws, &problems);
+  AssignDepthRanges(options.patch_match, options.msp.depth_range_from_sources, ws, &problems);
   DropObservations(&ws.model);
   LoadViews(problems, options.patch_match.max_image_size,
             SplitCacheSize(options.patch_match.cache_size).image_bytes, &ws);

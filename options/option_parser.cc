@@ -263,6 +263,10 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
                  "In geometric passes, offer a segment's plane only when the other views' depth "
                  "maps confirm it (reprojection within 1 px) on at least as many of the segment's "
                  "pixels as the planes they hold.");
+  MSP_ADD_OPTION(t, *m, depth_range_from_sources,
+                 "Depth range of each reference image (unless --PatchMatchStereo.depth_min/max "
+                 "are given) from the sparse points it or any of its sources observes in front of "
+                 "it and inside its image; false = its own observations only, as COLMAP.");
   MSP_ADD_OPTION(t, *m, filter_textureless_by_geometry,
                  "With geometric consistency, the final filter counts a weakly textured pixel's "
                  "sources by triangulation angle and reprojection alone: its NCC is noise. false "

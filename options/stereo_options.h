@@ -141,6 +141,10 @@ struct MspStereoOptions {
   // In geometric passes a segment's plane is offered only when the other views' depth maps
   // confirm it at least as often as the planes its pixels hold (docs/method.md section 2.10).
   bool segment_plane_confirmation = false;
+  // Depth range of a reference image from the sparse points it or any of its sources observes
+  // that lie in front of it and inside its image (COLMAP's percentile rule on more points);
+  // false = its own observations only, as COLMAP.
+  bool depth_range_from_sources = false;
   // The final filter judges a weakly textured pixel by geometric agreement alone (no NCC test).
   bool filter_textureless_by_geometry = true;
   // Cost (1 - NCC, in [0, 2]) above which the lowest cost-curve minimum is unreliable (APD: 0.5).

@@ -146,5 +146,32 @@ TEST(DepthRange, SmallCountsUseTheFirstAndLastIndices) {
   EXPECT_FLOAT_EQ(range.second, 8.0f * 1.25f);
 }
 
+// Shared ranges: the reference (image 1, 100x100 px, f = 100, looking down +z
+// from the origin) has its own points at z = 10..19; its source (image 2)
+// adds points at z = 2 and z = 40 that the reference sees, and one outside
+// the reference's image and one behind it, which do not count.
+TEST(DepthRange, SharedRangeTakesTheSourcesPointsTheReferenceSees) {
+  SparseModel model;
+  model.cameras = {test::MakeSparseCamera(1, kPinhole, 100, 100, {100, 100, 50, 50})};
+  model.images = {ImageAt(1, 0, 0, 0), ImageAt(2, 1, 0, 0), ImageAt(3, 0, 0, 0)};
+  for (int z = 10; z < 20; ++z) model.points3D.push_back(PointAt(z, 0, 0, z, {1}));
+  model.points3D.push_back(PointAt(100, 0, 0, 2, {2}));
+  model.points3D.push_back(PointAt(101, 0.1, 0, 40, {2, 3}));
+  model.points3D.push_back(PointAt(102, 30, 0, 10, {2}));  // u = 350: outside
+  model.points3D.push_back(PointAt(103, 0, 0, -4, {2}));   // behind
+  model.points3D.push_back(PointAt(104, 0, 0, 1, {3}));    // not a view of the problem
+  Problem problem;
+  problem.ref = 0;
+  problem.srcs = {1};
+  Problem alone;
+  alone.ref = 0;
+  const auto ranges = ComputeSharedDepthRanges(model, {problem, alone});
+  // 12 depths 2, 10..19, 40: indices 0 and 11.
+  EXPECT_FLOAT_EQ(ranges[0].first, 2.0f * 0.75f);
+  EXPECT_FLOAT_EQ(ranges[0].second, 40.0f * 1.25f);
+  // Without sources: the reference's own observations, as ComputeDepthRange.
+  EXPECT_EQ(ranges[1], ComputeDepthRange(model, 0));
+}
+
 }  // namespace
 }  // namespace msp

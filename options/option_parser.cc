@@ -261,8 +261,8 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
       "it unless the views reject it, textured ones only when it matches better.");
   MSP_ADD_OPTION(t, *m, segment_plane_confirmation,
                  "In geometric passes, offer a segment's plane only when the other views' depth "
-                 "maps confirm it (reprojection within 1 px) on at least as many of the segment's "
-                 "pixels as the planes they hold.");
+                 "maps confirm it (reprojection within 1 px) on at least half as many of the "
+                 "segment's pixels as the planes they hold.");
   MSP_ADD_OPTION(t, *m, depth_range_from_sources,
                  "Depth range of each reference image (unless --PatchMatchStereo.depth_min/max "
                  "are given) from the sparse points it or any of its sources observes in front of "

@@ -139,7 +139,7 @@ struct MspStereoOptions {
   // pixels take (docs/method.md section 2.10); false = no segment planes.
   bool segment_planes = true;
   // In geometric passes a segment's plane is offered only when the other views' depth maps
-  // confirm it at least as often as the planes its pixels hold (docs/method.md section 2.10).
+  // confirm it at least half as often as the planes its pixels hold (docs/method.md section 2.10).
   bool segment_plane_confirmation = false;
   // Depth range of a reference image from the sparse points it or any of its sources observes
   // that lie in front of it and inside its image (COLMAP's percentile rule on more points);

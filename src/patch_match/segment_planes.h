@@ -49,9 +49,9 @@ std::vector<int32_t> SegmentPlaneLabels(const DenseMap& color, Segmenter segment
 // every 4th row of each segment with an accepted plane, the plane and the
 // plane the pixel holds are reprojected through each source's depth map
 // (core::ComposedReprojectionError); a pixel confirms a plane when some
-// source brings it back within 1 px. A plane that fewer sampled pixels
-// confirm than confirm their own planes is no longer accepted: the views say
-// the segment's pixels are better where they are. Without source depth maps
+// source brings it back within 1 px. A plane that fewer than half as many
+// sampled pixels confirm as confirm their own planes is no longer accepted:
+// the views say the segment's pixels are better where they are. Without source depth maps
 // (photometric passes) nothing changes.
 void ConfirmSegmentPlanes(const core::PassParams& params, const std::vector<int32_t>& labels,
                           int num_threads, std::vector<SegmentPlane>* planes);

@@ -13,7 +13,7 @@
 
 #include "colmap_ext/patch_match_config.h"
 #include "colmap_ext/workspace.h"
-#include "core/math/vec.h"
+#include "core/math/camera.h"
 
 namespace msp {
 namespace {
@@ -248,12 +248,10 @@ std::vector<std::pair<double, double>> ComputeSharedDepthRanges(
         const double* xyz = model.points3D[k].xyz;
         const core::Vec3 X{static_cast<float>(xyz[0]), static_cast<float>(xyz[1]),
                            static_cast<float>(xyz[2])};
-        const core::Vec3 Xc = core::Mul(cam.R, X) + cam.t;
-        if (!(Xc.z > 0.0f)) continue;
-        const float u = cam.fx * Xc.x / Xc.z + cam.cx;
-        const float w = cam.fy * Xc.y / Xc.z + cam.cy;
-        if (u < 0.0f || w < 0.0f || u > static_cast<float>(cam.width) ||
-            w > static_cast<float>(cam.height)) {
+        const core::Vec3 Xc = core::WorldToCam(cam, X);
+        float col, row;
+        if (!core::ProjectCamPoint(cam, Xc, &col, &row) || col < 0.0f || row < 0.0f ||
+            col > static_cast<float>(cam.width) || row > static_cast<float>(cam.height)) {
           continue;
         }
         depths.push_back(Xc.z);

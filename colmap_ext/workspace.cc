@@ -182,13 +182,12 @@ void AssignDepthRanges(const PatchMatchStereoOptions& options, bool from_sources
     }
     return;
   }
-  const std::vector<std::pair<double, double>> own = ComputeDepthRanges(ws.model);
-  const std::vector<std::pair<double, double>> shared =
-      from_sources ? ComputeSharedDepthRanges(ws.model, *problems)
-                   : std::vector<std::pair<double, double>>();
+  // Per image (COLMAP's rule), or per problem with its sources' points.
+  const std::vector<std::pair<double, double>> ranges =
+      from_sources ? ComputeSharedDepthRanges(ws.model, *problems) : ComputeDepthRanges(ws.model);
   for (size_t p = 0; p < problems->size(); ++p) {
     Problem& problem = (*problems)[p];
-    const auto& range = from_sources ? shared[p] : own[problem.ref];
+    const auto& range = ranges[from_sources ? p : problem.ref];
     if (!(range.first > 0.0 && range.second > 0.0)) {
       throw InputError("no depth range: set " + MSP_OPTION_FLAG(options, depth_min) + " and " +
                        MSP_OPTION_FLAG(options, depth_max) +

@@ -116,7 +116,7 @@ MSP_HD uint32_t PerturbedSamplingSolution(const PassParams& p, int iteration, ui
   Rng rng = MakeRng(Mix64(RngKey(p.seed ^ kSamplingSeedSalt, p.image_id, p.pass_id,
                                  static_cast<uint32_t>(iteration) + 1u, pixel) ^
                           (0x100000000ull * static_cast<uint64_t>(j))));
-  const int lanes = num_lanes < 1 ? 1 : (num_lanes > kMaxAnchors ? kMaxAnchors : num_lanes);
+  const int lanes = ClampInt(num_lanes, 1, kMaxAnchors);
   const int lane =
       ClampInt(static_cast<int>(rng.Uniform() * static_cast<float>(lanes)), 0, lanes - 1);
   // One of the 15 other layouts, uniformly.

@@ -27,11 +27,13 @@ float Polynomial(const float (&c)[6], float t) {
 
 bool IsDepth(float d) { return std::isfinite(d) && d > 0.0f; }
 
-// The class colours: traffic lights, plus grey for holes.
+// The class colours: traffic lights, grey for holes, magenta for a surface
+// where nothing is.
 constexpr Rgb kAccurateColor{0, 200, 0};
 constexpr Rgb kCloseColor{255, 215, 0};
 constexpr Rgb kWrongColor{230, 0, 0};
 constexpr Rgb kMissingColor{128, 128, 128};
+constexpr Rgb kOnEmptyColor{230, 0, 230};
 
 }  // namespace
 
@@ -53,9 +55,13 @@ Rgb NormalColor(float x, float y, float z) {
   return Rgb{ToByte(0.5f * (x + 1.0f)), ToByte(0.5f * (y + 1.0f)), ToByte(0.5f * (z + 1.0f))};
 }
 
-DepthErrorClass ClassifyDepthError(float depth, float gt_depth, const double thresholds[2]) {
+DepthErrorClass ClassifyDepthError(float depth, float gt_depth, const double thresholds[2],
+                                   bool zero_is_empty) {
   // The same tests, in the same precision, as the evaluator's figures.
-  if (!(gt_depth > 0.0f)) return DepthErrorClass::kNoGroundTruth;
+  if (!(gt_depth > 0.0f)) {
+    return zero_is_empty && IsDepth(depth) ? DepthErrorClass::kOnEmpty
+                                           : DepthErrorClass::kNoGroundTruth;
+  }
   if (!IsDepth(depth)) return DepthErrorClass::kMissing;
   const double relative = std::abs(static_cast<double>(depth) - gt_depth) / gt_depth;
   if (relative <= thresholds[0]) return DepthErrorClass::kAccurate;
@@ -66,6 +72,8 @@ Rgb DepthErrorColor(DepthErrorClass error_class) {
   switch (error_class) {
     case DepthErrorClass::kNoGroundTruth:
       break;
+    case DepthErrorClass::kOnEmpty:
+      return kOnEmptyColor;
     case DepthErrorClass::kMissing:
       return kMissingColor;
     case DepthErrorClass::kAccurate:

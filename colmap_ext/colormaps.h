@@ -30,13 +30,17 @@ Rgb NormalColor(float x, float y, float z);
 // relative thresholds (msp_evaluate's acc1 / acc2, default 1 % and 5 %).
 enum class DepthErrorClass {
   kNoGroundTruth,  // black: the ground truth has no depth here
+  kOnEmpty,        // magenta: nothing is there (sky), yet the map has a depth
   kMissing,        // grey: the ground truth has one, the map none
   kAccurate,       // green: |d - gt| / gt <= thresholds[0]
   kClose,          // yellow: <= thresholds[1]
   kWrong,          // red: beyond thresholds[1]
 };
 
-DepthErrorClass ClassifyDepthError(float depth, float gt_depth, const double thresholds[2]);
+// `zero_is_empty`: a ground-truth depth of 0 means nothing is there
+// (GroundTruthInfo::ZeroDepthIsEmpty), so a depth on it is kOnEmpty.
+DepthErrorClass ClassifyDepthError(float depth, float gt_depth, const double thresholds[2],
+                                   bool zero_is_empty = false);
 Rgb DepthErrorColor(DepthErrorClass error_class);
 
 }  // namespace msp

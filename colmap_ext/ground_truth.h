@@ -33,6 +33,11 @@ struct GroundTruthInfo {
   bool has_normals = true;
   bool has_textureless = true;
 
+  // What a ground-truth depth of 0 means. In exact renders (no depth_source)
+  // nothing is there: sky, open background, and a map's depth there is a
+  // surface made up. From a sensor it means no measurement: nothing is known.
+  bool ZeroDepthIsEmpty() const { return depth_source.empty(); }
+
   std::string DepthMapPath(const std::string& name) const;     // depth_maps/<name>.bin
   std::string NormalMapPath(const std::string& name) const;    // normal_maps/<name>.bin
   std::string TexturelessPath(const std::string& name) const;  // textureless/<name>.png

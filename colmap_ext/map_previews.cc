@@ -62,14 +62,16 @@ RgbImage NormalPreview(const DenseMap& normal) {
   return image;
 }
 
-RgbImage ErrorPreview(const DenseMap& depth, const DenseMap& gt_depth, const double thresholds[2]) {
+RgbImage ErrorPreview(const DenseMap& depth, const DenseMap& gt_depth, const double thresholds[2],
+                      bool zero_is_empty) {
   RgbImage image(depth.width, depth.height);
   for (int row = 0; row < depth.height; ++row) {
     const int gt_row = NearestGroundTruthIndex(row, depth.height, gt_depth.height);
     for (int col = 0; col < depth.width; ++col) {
       const int gt_col = NearestGroundTruthIndex(col, depth.width, gt_depth.width);
       image.At(row, col) = DepthErrorColor(
-          ClassifyDepthError(depth.At(row, col), gt_depth.At(gt_row, gt_col), thresholds));
+          ClassifyDepthError(depth.At(row, col), gt_depth.At(gt_row, gt_col), thresholds,
+                             zero_is_empty));
     }
   }
   return image;
@@ -91,7 +93,8 @@ void WriteMapPreviews(const std::string& workspace_path, const std::string& imag
   const DenseMap gt_depth = ReadDenseMap(gt_path);
   if (gt_depth.channels != 1) throw InputError(gt_path + ": a depth map has 1 channel");
   WritePreviewPng(MapPreviewPath(workspace_path, image_name, MapPreview::kError),
-                  ErrorPreview(depth, gt_depth, ground_truth->depth_relative_thresholds));
+                  ErrorPreview(depth, gt_depth, ground_truth->depth_relative_thresholds,
+                               ground_truth->ZeroDepthIsEmpty()));
 }
 
 std::vector<std::pair<std::string, std::string>> ExistingPreviews(const std::string& workspace_path,

@@ -31,7 +31,8 @@ RgbImage DepthPreview(const DenseMap& depth);
 RgbImage NormalPreview(const DenseMap& normal);
 // Every pixel of `depth` classed against the ground-truth pixel nearest to it
 // (NearestGroundTruthIndex: the ground truth may be larger), at the map's size.
-RgbImage ErrorPreview(const DenseMap& depth, const DenseMap& gt_depth, const double thresholds[2]);
+RgbImage ErrorPreview(const DenseMap& depth, const DenseMap& gt_depth, const double thresholds[2],
+                      bool zero_is_empty = false);
 
 // Writes the depth and normal previews of `image_name` and, when
 // `ground_truth` is given and lists the image, its error preview; each PNG

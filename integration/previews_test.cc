@@ -65,7 +65,8 @@ Rgb PngPixel(const cv::Mat& bgr, int row, int col) {
 
 // The class of map pixel (row, col), written out here rather than taken from
 // ErrorPreview: ground-truth pixel round(i * gt_size / size), relative error
-// against the scene's thresholds.
+// against the scene's thresholds; a depth where the render's ground truth is
+// empty (the sky) is its own class.
 DepthErrorClass ExpectedClass(const DenseMap& depth, const DenseMap& gt, int row, int col,
                               const double thresholds[2]) {
   const int gt_row =
@@ -76,8 +77,10 @@ DepthErrorClass ExpectedClass(const DenseMap& depth, const DenseMap& gt, int row
                static_cast<int>(std::lround(static_cast<double>(col) * gt.width / depth.width)));
   const float d_gt = gt.At(gt_row, gt_col);
   const float d = depth.At(row, col);
-  if (!(d_gt > 0.0f)) return DepthErrorClass::kNoGroundTruth;
-  if (!(std::isfinite(d) && d > 0.0f)) return DepthErrorClass::kMissing;
+  const bool has_depth = std::isfinite(d) && d > 0.0f;
+  if (!(d_gt > 0.0f))
+    return has_depth ? DepthErrorClass::kOnEmpty : DepthErrorClass::kNoGroundTruth;
+  if (!has_depth) return DepthErrorClass::kMissing;
   const double relative = std::abs(static_cast<double>(d) - d_gt) / d_gt;
   if (relative <= thresholds[0]) return DepthErrorClass::kAccurate;
   return relative <= thresholds[1] ? DepthErrorClass::kClose : DepthErrorClass::kWrong;
@@ -155,7 +158,8 @@ TEST_F(PreviewsTest, PicturesMatchTheFinalMapsAndTheGroundTruth) {
     // Green is the evaluator's cmp1 over ground-truth pixels and acc1 over
     // the valid ones.
     const int green = counts[DepthErrorClass::kAccurate];
-    const int with_gt = kMapWidth * kMapHeight - counts[DepthErrorClass::kNoGroundTruth];
+    const int with_gt = kMapWidth * kMapHeight - counts[DepthErrorClass::kNoGroundTruth] -
+                        counts[DepthErrorClass::kOnEmpty];
     const int valid = green + counts[DepthErrorClass::kClose] + counts[DepthErrorClass::kWrong];
     EXPECT_GT(green, 0);
     const eval::RegionMetrics& figures = evaluation.maps[i].all;
@@ -163,6 +167,11 @@ TEST_F(PreviewsTest, PicturesMatchTheFinalMapsAndTheGroundTruth) {
     ASSERT_EQ(figures.num_valid, valid);
     EXPECT_DOUBLE_EQ(figures.complete[0], static_cast<double>(green) / with_gt);
     EXPECT_DOUBLE_EQ(figures.accurate[0], static_cast<double>(green) / valid);
+    // Magenta is the evaluator's depth where the ground truth is empty.
+    const eval::EmptyMetrics& empty = evaluation.maps[i].empty;
+    EXPECT_EQ(empty.num_empty,
+              counts[DepthErrorClass::kNoGroundTruth] + counts[DepthErrorClass::kOnEmpty]);
+    EXPECT_EQ(empty.num_with_depth, counts[DepthErrorClass::kOnEmpty]);
   }
 }
 

@@ -94,6 +94,10 @@ RegionMetrics Mean(const RegionSum& total) {
   return m;
 }
 
+double WithDepthFraction(const EmptyMetrics& m) {
+  return m.num_empty > 0 ? static_cast<double>(m.num_with_depth) / m.num_empty : 0.0;
+}
+
 bool InMask(const cv::Mat& mask, int row, int col) {
   return !mask.empty() && mask.at<uint8_t>(row, col) > 0;
 }
@@ -111,7 +115,8 @@ void CheckMask(const cv::Mat& mask, const DenseMap& gt, const char* what) {
 
 DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
                                  const DenseMap& gt_depth, const DenseMap& gt_normal,
-                                 const RegionMasks& masks, const DepthThresholds& thresholds) {
+                                 const RegionMasks& masks, const DepthThresholds& thresholds,
+                                 bool zero_is_empty) {
   DepthMapMetrics out;
   out.width = depth.width;
   out.height = depth.height;
@@ -127,7 +132,14 @@ DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
     for (int col = 0; col < depth.width; ++col) {
       const int gt_col = NearestGroundTruthIndex(col, depth.width, gt_depth.width);
       const float d_gt = gt_depth.At(gt_row, gt_col);
-      if (!(d_gt > 0.0f)) continue;
+      if (!(d_gt > 0.0f)) {
+        if (zero_is_empty) {
+          const float d = depth.At(row, col);
+          ++out.empty.num_empty;
+          out.empty.num_with_depth += std::isfinite(d) && d > 0.0f ? 1 : 0;
+        }
+        continue;
+      }
       RegionAccumulator* regions[4] = {&all, nullptr, nullptr, nullptr};
       regions[1] = InMask(masks.textureless, gt_row, gt_col) ? &flat : &textured;
       if (InMask(masks.near_edge, gt_row, gt_col)) regions[2] = &near_edge;
@@ -165,6 +177,7 @@ DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
   out.textured = textured.Finish();
   out.near_edge = near_edge.Finish();
   out.alike_edge = alike_edge.Finish();
+  out.empty.with_depth_fraction = WithDepthFraction(out.empty);
   return out;
 }
 
@@ -179,12 +192,15 @@ DepthMapMetrics AverageMetrics(const std::vector<DepthMapMetrics>& maps) {
     AddRegion(&near_edge, m.near_edge, m.missing);
     AddRegion(&alike_edge, m.alike_edge, m.missing);
     if (!m.missing && avg.edge_band_radius == 0) avg.edge_band_radius = m.edge_band_radius;
+    avg.empty.num_empty += m.empty.num_empty;
+    avg.empty.num_with_depth += m.empty.num_with_depth;
   }
   avg.all = Mean(all);
   avg.textureless = Mean(flat);
   avg.textured = Mean(textured);
   avg.near_edge = Mean(near_edge);
   avg.alike_edge = Mean(alike_edge);
+  avg.empty.with_depth_fraction = WithDepthFraction(avg.empty);
   return avg;
 }
 

@@ -35,6 +35,15 @@ struct RegionMetrics {
   double median_normal_error_deg = 0.0;  // over valid predictions with a non-zero normal
 };
 
+// Pixels where nothing is (a ground-truth depth of 0 in exact renders: sky,
+// open background) and the share of them the map gives a depth: a surface
+// with no evidence behind it. Averages pool the pixels of every image.
+struct EmptyMetrics {
+  int num_empty = 0;
+  int num_with_depth = 0;
+  double with_depth_fraction = 0.0;  // num_with_depth / num_empty
+};
+
 struct DepthMapMetrics {
   std::string name;
   bool missing = false;  // no prediction file: every figure is 0
@@ -45,6 +54,7 @@ struct DepthMapMetrics {
   RegionMetrics textured;    // the rest of the ground-truth pixels
   RegionMetrics near_edge;   // near a true depth edge (tools/edge_regions.h)
   RegionMetrics alike_edge;  // of those, near an edge between alike colours
+  EmptyMetrics empty;        // counted only when the ground truth's 0 means "nothing there"
   int edge_band_radius = 0;  // of near_edge / alike_edge, in ground-truth pixels
   // The pictures msp_stereo --MspStereo.write_previews left for the image, as
   // (kind, path), only those that exist (ExistingPreviews, map_previews.h).
@@ -62,12 +72,14 @@ struct RegionMasks {
 // The prediction may be smaller than the ground truth (max_image_size): the
 // ground truth and the masks are sampled nearest-neighbour at each predicted
 // pixel (NearestGroundTruthIndex, colmap_ext/ground_truth.h). Pixels whose
-// ground truth is 0 (no measurement, for sensor depth) count neither way.
+// ground truth is 0 count neither way in the regions; with `zero_is_empty`
+// (GroundTruthInfo::ZeroDepthIsEmpty) they are counted in `empty`.
 // `normal` or `gt_normal` may be empty (then normal errors are 0); a zero
 // ground-truth normal is "none" and that pixel has no normal error.
 DepthMapMetrics EvaluateDepthMap(const DenseMap& depth, const DenseMap& normal,
                                  const DenseMap& gt_depth, const DenseMap& gt_normal,
-                                 const RegionMasks& masks, const DepthThresholds& thresholds);
+                                 const RegionMasks& masks, const DepthThresholds& thresholds,
+                                 bool zero_is_empty = false);
 
 // Mean over images of every figure. Missing maps count as zeros; an image
 // whose region holds no ground-truth pixel has no figure for it and is left

@@ -74,6 +74,25 @@ void PrintProvenance(const GroundTruthInfo& info, std::ostream& out) {
   }
 }
 
+// The headline of maps on exact renders: how much of where nothing is (sky,
+// open background) the maps fill, overall and per image.
+void PrintEmpty(const EvaluationResult& r, std::ostream& out) {
+  if (!r.info.ZeroDepthIsEmpty()) return;
+  const EmptyMetrics& total = r.average.empty;
+  out << "\nDepth where the ground truth is empty (sky, open background): "
+      << Percent(total.with_depth_fraction) << " % of " << total.num_empty << " pixels\n";
+  if (total.num_empty == 0) return;
+  char buf[128];
+  std::snprintf(buf, sizeof(buf), "%-16s %9s %9s %7s\n", "image", "empty", "w/depth", "%");
+  out << buf;
+  for (const DepthMapMetrics& m : r.maps) {
+    if (m.missing) continue;
+    std::snprintf(buf, sizeof(buf), "%-16s %9d %9d %7s\n", m.name.c_str(), m.empty.num_empty,
+                  m.empty.num_with_depth, Percent(m.empty.with_depth_fraction).c_str());
+    out << buf;
+  }
+}
+
 // How the edge bands were drawn, under their tables.
 void PrintEdgeBand(const EvaluationResult& r, std::ostream& out) {
   out << "(near a depth edge = within " << r.average.edge_band_radius << " ground-truth pixels, "
@@ -153,6 +172,14 @@ void JsonMap(std::ostringstream& s, const GroundTruthInfo& info, const DepthMapM
       s << "null";
     }
   }
+  s << ", \"empty\": ";
+  if (info.ZeroDepthIsEmpty()) {
+    s << "{\"num_empty\": " << m.empty.num_empty << ", \"num_with_depth\": "
+      << m.empty.num_with_depth << ", \"with_depth_fraction\": " << m.empty.with_depth_fraction
+      << "}";
+  } else {
+    s << "null";
+  }
   if (with_previews) {
     s << ", \"previews\": ";
     JsonPreviews(s, m);
@@ -170,6 +197,7 @@ void PrintReport(const EvaluationResult& r, std::ostream& out) {
   if (!r.maps.empty()) {
     out << "cmpK = within threshold K over all ground-truth pixels; accK = over valid "
            "predictions\n";
+    PrintEmpty(r, out);
     for (const Region& region : kRegions) {
       if (HasRegion(r.info, region)) PrintMapTable(r, region, out);
     }

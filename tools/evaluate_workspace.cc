@@ -83,7 +83,8 @@ DepthMapMetrics EvaluateOne(const EvaluationOptions& options, const GroundTruthI
   const EdgeRegions edges = FindEdgeRegions(gt_depth, image, band);
   masks.near_edge = edges.near_edge;
   masks.alike_edge = edges.alike_edge;
-  m = EvaluateDepthMap(depth, normal, gt_depth, gt_normal, masks, Thresholds(info));
+  m = EvaluateDepthMap(depth, normal, gt_depth, gt_normal, masks, Thresholds(info),
+                       info.ZeroDepthIsEmpty());
   m.name = name;
   m.edge_band_radius = band;
   return m;
@@ -111,8 +112,8 @@ EvaluationResult EvaluateWorkspace(const EvaluationOptions& options) {
         info.extent,
         {std::begin(info.cloud_threshold_fractions), std::end(info.cloud_threshold_fractions)},
         {std::begin(info.absolute_thresholds_m), std::end(info.absolute_thresholds_m)});
-    const std::vector<uint8_t> judged =
-        MeasuredPoints(fused.points, MeasuredViews(options.workspace, info));
+    const std::vector<uint8_t> judged = MeasuredPoints(
+        fused.points, MeasuredViews(options.workspace, info), info.ZeroDepthIsEmpty());
     result.has_cloud = true;
     result.fused = options.fused;
     result.cloud = EvaluateCloud(fused.points, judged, gt.points, gt.num_views,

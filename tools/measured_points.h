@@ -5,8 +5,9 @@
 // reward anything. The rule: a point is judged when at least one
 // ground-truth view has a measurement where the point projects (in front of
 // the camera, inside the image, ground-truth depth > 0 at the nearest pixel).
-// For rendered ground truth, which has depth at every pixel, every point any
-// view sees is judged.
+// For rendered ground truth, whose 0 means nothing is there (sky), every
+// point any view sees is judged (`zero_is_empty`): a point in the sky is
+// judged, and far from every surface.
 #pragma once
 
 #include <Eigen/Core>
@@ -21,12 +22,13 @@ namespace eval {
 
 struct MeasuredView {
   core::Camera camera;  // at the ground truth's size, COLMAP MVS pixel convention
-  DenseMap depth;       // ground-truth depth, 0 = no measurement
+  DenseMap depth;       // ground-truth depth, 0 = no measurement or nothing there
 };
 
 // One flag per point: 1 = judged.
 std::vector<uint8_t> MeasuredPoints(const std::vector<Eigen::Vector3f>& points,
-                                    const std::vector<MeasuredView>& views);
+                                    const std::vector<MeasuredView>& views,
+                                    bool zero_is_empty = false);
 
 }  // namespace eval
 }  // namespace msp

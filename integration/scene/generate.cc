@@ -49,7 +49,7 @@ void CheckOptions(const GeneratorOptions& options) {
 
 GeneratorSummary GenerateScene(const GeneratorOptions& options) {
   CheckOptions(options);
-  const Scene scene = MakeRoomScene();
+  const Scene scene = MakeRoomScene(options.sky_window);
   const std::vector<PinholeView> views = MakeCameraRig(options.rig, options.seed);
   std::vector<RenderedView> rendered(views.size());
   ParallelIndices(static_cast<int>(views.size()),
@@ -61,7 +61,9 @@ GeneratorSummary GenerateScene(const GeneratorOptions& options) {
 
   WriteColmapWorkspace(options.output, model, rendered);
   WriteGroundTruth(options.output, views, rendered, sample,
-                   GroundTruthJson(views, sample, {{"seed", std::to_string(options.seed)}}));
+                   GroundTruthJson(views, sample,
+                                   {{"seed", std::to_string(options.seed)},
+                                    {"sky_window", options.sky_window ? "true" : "false"}}));
 
   GeneratorSummary summary;
   summary.num_images = static_cast<int>(views.size());

@@ -17,6 +17,8 @@ struct GeneratorOptions {
   // Target number of sparse points (TrackOptions::num_points); fewer make a
   // small model for the many-image workspaces of the memory test.
   int num_points = 6000;
+  // The window to the sky in the y = 0 wall (MakeRoomScene).
+  bool sky_window = true;
 };
 
 struct GeneratorSummary {

@@ -74,9 +74,8 @@ RenderedView RenderView(const Scene& scene, const PinholeView& view, int view_in
           const double dx = (sx + 0.5) / kSupersampling - 0.5;
           const double dy = (sy + 0.5) / kSupersampling - 0.5;
           Hit sub;
-          if (scene.Intersect(center, view.RayDirection(col + dx, row + dy), &sub)) {
-            rgb += scene.Radiance(sub);
-          }
+          const Eigen::Vector3d dir = view.RayDirection(col + dx, row + dy);
+          rgb += scene.Intersect(center, dir, &sub) ? scene.Radiance(sub) : scene.SkyRadiance(dir);
         }
       }
       rgb /= kSupersampling * kSupersampling;

@@ -39,6 +39,17 @@ Material Textured(Texture texture, const Eigen::Vector3d& a1, const Eigen::Vecto
   return m;
 }
 
+// Whether `p`, on face `face` of a room, lies in the room's window.
+bool InOpening(const Shape& room, int face, const Eigen::Vector3d& p) {
+  if (face != room.opening_face) return false;
+  const int normal_axis = face / 2;
+  for (int a = 0; a < 3; ++a) {
+    if (a == normal_axis) continue;
+    if (p[a] < room.opening_lo[a] || p[a] > room.opening_hi[a]) return false;
+  }
+  return true;
+}
+
 Shape Box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, int material) {
   Shape s;
   s.type = ShapeType::kBox;
@@ -52,7 +63,7 @@ Shape Box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, int material) {
 
 Eigen::Vector3d RoomSize() { return Eigen::Vector3d(5.0, 5.0, 2.6); }
 
-Scene MakeRoomScene() {
+Scene MakeRoomScene(bool sky_window) {
   Scene scene;
   scene.materials.resize(kNumMaterials);
   // Walls, floor and ceiling vary by only 1-3 % over metres: well below what
@@ -72,6 +83,15 @@ Scene MakeRoomScene() {
   room.hi = RoomSize();
   const int faces[kNumRoomFaces] = {kWall, kWall, kWall, kWall, kFloor, kCeiling};
   for (int f = 0; f < kNumRoomFaces; ++f) room.face_material[f] = faces[f];
+  if (sky_window) {
+    // Above the sphere and the wall-coloured box at the y = 0 wall, up to the
+    // ceiling: the sky meets the top border of the views that look up least,
+    // and its outline against the wall is a roofline-like silhouette between
+    // two untextured, bright regions.
+    room.opening_face = 2;  // -y
+    room.opening_lo = {1.25, 0.0, 1.25};
+    room.opening_hi = {2.45, 0.0, RoomSize().z()};
+  }
   scene.shapes.push_back(room);
 
   // Textured objects on the floor near the corner.
@@ -129,7 +149,8 @@ bool Scene::Intersect(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
     switch (shape.type) {
       case ShapeType::kRoom: {
         int face = 0;
-        ok = IntersectRoom(shape, origin, dir, min_t, &t, &n, &face);
+        ok = IntersectRoom(shape, origin, dir, min_t, &t, &n, &face) &&
+             !InOpening(shape, face, origin + t * dir);
         if (ok) material = shape.face_material[face];
         break;
       }

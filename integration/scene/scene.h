@@ -47,6 +47,11 @@ struct Shape {
   double radius = 0.0;
   int material = 0;
   int face_material[kNumRoomFaces] = {0, 0, 0, 0, 0, 0};
+  // kRoom: a window. A ray that reaches face `opening_face` (-1: none) inside
+  // the box [opening_lo, opening_hi] leaves the room and sees the sky.
+  int opening_face = -1;
+  Eigen::Vector3d opening_lo = Eigen::Vector3d::Zero();
+  Eigen::Vector3d opening_hi = Eigen::Vector3d::Zero();
 };
 
 struct Hit {
@@ -77,10 +82,16 @@ class Scene {
 
   // Lambertian shading (point light + ambient) of a hit, before camera noise.
   Eigen::Vector3d Radiance(const Hit& hit) const;
+
+  // What a ray that hits nothing sees: a clear sky, bright and smooth, from
+  // pale at the horizon to blue overhead (unit direction `dir`).
+  Eigen::Vector3d SkyRadiance(const Eigen::Vector3d& dir) const;
 };
 
-// Room of kRoomSize with the textured and the camouflaged objects.
-Scene MakeRoomScene();
+// Room of kRoomSize with the textured and the camouflaged objects; with
+// `sky_window`, a window in the y = 0 wall through which every view sees open
+// sky (pixels whose ground truth is empty: nothing is there to reconstruct).
+Scene MakeRoomScene(bool sky_window = true);
 
 // Size of the room of MakeRoomScene (x, y, z extent in metres).
 Eigen::Vector3d RoomSize();

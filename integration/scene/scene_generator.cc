@@ -24,6 +24,9 @@ int main(int argc, char** argv) {
   command_line.Add("num_cameras", &options.rig.num_cameras, "Number of views on the camera arc.");
   command_line.Add("num_points", &options.num_points,
                    "Target number of sparse points (3D points with tracks) of the model.");
+  command_line.AddFlag("no_sky_window", &options.sky_window, false,
+                       "Close the window to open sky in the y = 0 wall (whose pixels have nothing "
+                       "to reconstruct: their ground truth is empty).");
   try {
     if (command_line.Parse(argc, argv) == msp::ParseStatus::kHelp) {
       std::cout << command_line.Usage();

@@ -75,6 +75,11 @@ TEST(Colormaps, DepthErrorClassesFollowTheEvaluatorsThresholds) {
   EXPECT_EQ(ClassifyDepthError(0.951f, 1.0f, kThresholds), DepthErrorClass::kClose);
   EXPECT_EQ(ClassifyDepthError(1.051f, 1.0f, kThresholds), DepthErrorClass::kWrong);
   EXPECT_EQ(ClassifyDepthError(4.0f, 2.0f, kThresholds), DepthErrorClass::kWrong);
+  // Where nothing is (an exact render's 0), a depth is its own class.
+  EXPECT_EQ(ClassifyDepthError(2.0f, 0.0f, kThresholds, true), DepthErrorClass::kOnEmpty);
+  EXPECT_EQ(ClassifyDepthError(0.0f, 0.0f, kThresholds, true), DepthErrorClass::kNoGroundTruth);
+  EXPECT_NE(DepthErrorColor(DepthErrorClass::kOnEmpty), DepthErrorColor(DepthErrorClass::kWrong));
+  EXPECT_NE(DepthErrorColor(DepthErrorClass::kOnEmpty), Rgb{});
   const double wide[2] = {0.5, 1.0};  // a scene.json may set its own
   EXPECT_EQ(ClassifyDepthError(1.5f, 1.0f, wide), DepthErrorClass::kAccurate);  // exactly 0.5
   EXPECT_EQ(ClassifyDepthError(2.0f, 1.0f, wide), DepthErrorClass::kClose);     // exactly 1

@@ -172,6 +172,39 @@ TEST(EvaluateDepthMap, MaskOfAnotherSizeIsAnError) {
                std::invalid_argument);
 }
 
+// Where the ground truth is empty (sky in an exact render), a depth is a made
+// up surface: counted in `empty` only when 0 means "nothing there", never in
+// the regions.
+TEST(EvaluateDepthMap, DepthWhereTheGroundTruthIsEmptyIsCountedApart) {
+  GroundTruth gt;
+  for (int c = 0; c < gt.depth.width; ++c) gt.depth.At(0, c) = 0.0f;  // the top row: sky
+  DenseMap depth = gt.depth;
+  for (int c = 0; c < 3; ++c) depth.At(0, c) = 5.0f;  // three sky pixels filled
+  const DepthMapMetrics empty =
+      EvaluateDepthMap(depth, DenseMap(), gt.depth, gt.normal, gt.masks, kThresholds, true);
+  EXPECT_EQ(empty.empty.num_empty, 8);
+  EXPECT_EQ(empty.empty.num_with_depth, 3);
+  EXPECT_DOUBLE_EQ(empty.empty.with_depth_fraction, 3.0 / 8.0);
+  EXPECT_EQ(empty.all.num_gt, 40);
+  EXPECT_DOUBLE_EQ(empty.all.accurate[0], 1.0);
+  const DepthMapMetrics unmeasured =
+      EvaluateDepthMap(depth, DenseMap(), gt.depth, gt.normal, gt.masks, kThresholds, false);
+  EXPECT_EQ(unmeasured.empty.num_empty, 0);
+  EXPECT_EQ(unmeasured.empty.num_with_depth, 0);
+  EXPECT_EQ(unmeasured.all.num_gt, 40);
+}
+
+TEST(AverageMetrics, PoolsTheEmptyPixelsOfEveryImage) {
+  DepthMapMetrics a, b;
+  a.empty.num_empty = 100;
+  a.empty.num_with_depth = 50;
+  b.empty.num_empty = 300;
+  b.empty.num_with_depth = 0;
+  const DepthMapMetrics avg = AverageMetrics({a, b});
+  EXPECT_EQ(avg.empty.num_empty, 400);
+  EXPECT_DOUBLE_EQ(avg.empty.with_depth_fraction, 0.125);
+}
+
 TEST(AverageMetrics, MeansPerImageFigures) {
   DepthMapMetrics a, b;
   a.all.num_gt = 10;

@@ -25,6 +25,28 @@ EvaluationResult TwoImages() {
   return r;
 }
 
+// On exact renders the share of empty ground truth given a depth is a
+// headline, overall and per image, in the text and the JSON.
+TEST(EvaluateReport, DepthWhereTheGroundTruthIsEmptyIsAHeadline) {
+  EvaluationResult r = TwoImages();
+  r.maps[0].empty = {200, 10, 0.05};
+  r.maps[1].empty = {200, 0, 0.0};
+  r.average = AverageMetrics(r.maps);
+  std::ostringstream out;
+  PrintReport(r, out);
+  const std::string text = out.str();
+  EXPECT_NE(text.find("Depth where the ground truth is empty (sky, open background):   2.50 % of "
+                      "400 pixels"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("a.png                  200        10    5.00"), std::string::npos) << text;
+  const std::string json = ReportJson(r);
+  EXPECT_NE(json.find("\"empty\": {\"num_empty\": 400, \"num_with_depth\": 10, "
+                      "\"with_depth_fraction\": 0.025}"),
+            std::string::npos)
+      << json;
+}
+
 TEST(EvaluateReport, TextNamesEveryPreviewThatExists) {
   std::ostringstream out;
   PrintReport(TwoImages(), out);
@@ -127,8 +149,10 @@ TEST(EvaluateReport, SaysWhatTheGroundTruthLacks) {
   EXPECT_NE(text.find("No ground-truth normals"), std::string::npos);
   EXPECT_EQ(text.find("textureless pixels only"), std::string::npos);
   EXPECT_NE(text.find("n/a\n"), std::string::npos);
+  EXPECT_EQ(text.find("ground truth is empty"), std::string::npos);
   const std::string json = ReportJson(r);
   EXPECT_NE(json.find("\"textureless\": null, \"textured\": null"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"empty\": null"), std::string::npos);
   EXPECT_NE(json.find("\"has_normals\": false"), std::string::npos);
 }
 

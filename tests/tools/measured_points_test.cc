@@ -33,6 +33,9 @@ TEST(MeasuredPoints, JudgedOnlyWhereSomeViewMeasured) {
   };
   const std::vector<uint8_t> judged = MeasuredPoints(points, {View()});
   EXPECT_EQ(judged, (std::vector<uint8_t>{1, 0, 0, 0, 1}));
+  // Where 0 means nothing is there (a render's sky), a point seen there is
+  // judged: it is a made-up surface, not an unmeasured one.
+  EXPECT_EQ(MeasuredPoints(points, {View()}, true), (std::vector<uint8_t>{1, 1, 0, 0, 1}));
 }
 
 TEST(MeasuredPoints, AnyViewWithAMeasurementSuffices) {

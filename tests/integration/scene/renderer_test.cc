@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "integration/scene/shapes.h"
 
@@ -158,8 +160,9 @@ TEST(Renderer, WallsAreNearlyTexturelessAndObjectsTextured) {
   cv::split(gray, channels);
   const cv::Mat g = (channels[0] + channels[1] + channels[2]) / 3.0;
   constexpr int kRadius = 5;  // 11x11 windows, as the matching cost uses
-  double flat_sum = 0, textured_sum = 0;
-  int flat_n = 0, textured_n = 0;
+  std::vector<double> flat;
+  double textured_sum = 0;
+  int textured_n = 0;
   for (int y = kRadius; y + kRadius < g.rows; y += 4) {
     for (int x = kRadius; x + kRadius < g.cols; x += 4) {
       const cv::Mat window =
@@ -170,18 +173,23 @@ TEST(Renderer, WallsAreNearlyTexturelessAndObjectsTextured) {
       cv::Scalar mean, stddev;
       cv::meanStdDev(window, mean, stddev);
       if (n == static_cast<int>(mask.total())) {
-        flat_sum += stddev[0];
-        ++flat_n;
+        flat.push_back(stddev[0]);
       } else if (n == 0) {
         textured_sum += stddev[0];
         ++textured_n;
       }
     }
   }
-  ASSERT_GT(flat_n, 1000);
+  ASSERT_GT(flat.size(), 1000u);
   ASSERT_GT(textured_n, 50);
-  const double flat = flat_sum / flat_n, textured = textured_sum / textured_n;
-  EXPECT_LT(flat, 2.0) << "walls/floor should only carry camera noise";
+  // The median window is the wall itself (0.69 grey levels; the noise alone,
+  // sigma 1 per channel, is 0.58 in the grey mean). The mean moved with how
+  // many windows straddle the deliberate alike-colour depth edges (2.04 with
+  // the sky window, which hides some plain wall), so it is not the figure.
+  std::nth_element(flat.begin(), flat.begin() + flat.size() / 2, flat.end());
+  const double flat_median = flat[flat.size() / 2];
+  const double textured = textured_sum / textured_n;
+  EXPECT_LT(flat_median, 1.0) << "walls/floor should only carry camera noise";
   EXPECT_GT(textured, 15.0);
   // Most of the image is textureless surface.
   EXPECT_GT(cv::countNonZero(r.textureless), r.textureless.total() / 2);

@@ -101,7 +101,33 @@ TEST(SceneGenerator, WritesACompleteWorkspaceWithRealTracks) {
   EXPECT_LT(info.extent, 10.0);
   const DenseMap depth = ReadDenseMap(info.DepthMapPath("img_000.png"));
   EXPECT_EQ(depth.width, 160);
-  for (const float d : depth.data) ASSERT_GT(d, 0.0f);  // a closed room: no holes
+  EXPECT_TRUE(info.ZeroDepthIsEmpty());
+  // The window to the sky: a few percent of the view, nothing there (depth
+  // 0), all in the upper half, where the window is.
+  int empty = 0, empty_low = 0;
+  for (int row = 0; row < depth.height; ++row) {
+    for (int col = 0; col < depth.width; ++col) {
+      ASSERT_GE(depth.At(row, col), 0.0f);
+      if (depth.At(row, col) > 0.0f) continue;
+      ++empty;
+      empty_low += row >= depth.height / 2 ? 1 : 0;
+    }
+  }
+  EXPECT_GT(empty, depth.width * depth.height / 50);
+  EXPECT_LT(empty, depth.width * depth.height / 6);
+  EXPECT_EQ(empty_low, 0);
+}
+
+TEST(SceneGenerator, WithoutTheSkyWindowTheRoomIsClosed) {
+  const test::TempDir dir;
+  GeneratorOptions options = SmallScene(dir.path(), 1);
+  options.sky_window = false;
+  GenerateScene(options);
+  const GroundTruthInfo info = ReadGroundTruthInfo(options.output + "/ground_truth");
+  for (const std::string& name : info.image_names) {
+    const DenseMap depth = ReadDenseMap(info.DepthMapPath(name));
+    for (const float d : depth.data) ASSERT_GT(d, 0.0f) << name;  // no holes
+  }
 }
 
 TEST(SceneGenerator, RejectsBadOptions) {

@@ -263,6 +263,13 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
                  "In geometric passes, offer a segment's plane only when the other views' depth "
                  "maps confirm it (reprojection within 1 px) on at least half as many of the "
                  "segment's pixels as the planes they hold.");
+  MSP_ADD_OPTION(t, *m, segment_plane_own_support,
+                 "A segment's plane counts only its own support: not the border pixels where a "
+                 "neighbour with the same plane ends (a window's outline against the sky, a "
+                 "roofline); false = every inlier counts.");
+  MSP_ADD_OPTION(t, *m, open_sky,
+                 "Leave empty the bright, mostly untextured segments that touch the image border "
+                 "and have no plane of their own (the sky); needs segment_planes.");
   MSP_ADD_OPTION(t, *m, depth_range_from_sources,
                  "Depth range of each reference image (unless --PatchMatchStereo.depth_min/max "
                  "are given) from the sparse points it or any of its sources observes in front of "

@@ -30,6 +30,7 @@
 #include "patch_match/step_ledger.h"
 #include "patch_match/sweep_engine.h"
 #include "patch_match/sweeps.h"
+#include "patch_match/open_sky.h"
 #include "patch_match/unlit_pixels.h"
 #include "prior/prior_driver.h"
 
@@ -392,7 +393,7 @@ class CpuRunner {
     // Asked before the outputs are written: afterwards the image has them.
     const bool prior_preview = pass.prior_preview && !sink_.HasFinalOutput(problem.ref);
     if (pass.output != PassOutput::kNone) {
-      Measured(pass, Step::kOutputs, [&] { WriteOutputs(pass, params, problem); });
+      Measured(pass, Step::kOutputs, [&] { WriteOutputs(pass, params, problem, state.open_sky); });
     }
     if (prior_preview) WritePriorPreview(problem, state);
     cache_.Put(problem.ref, std::move(state));
@@ -440,13 +441,18 @@ class CpuRunner {
     if (state->segments.empty()) {
       state->segments = SegmentPlaneLabels(level_->color.at(problem.ref), segmenter_);
     }
-    const SegmentPlanesReport r = ApplySegmentPlanes(
-        params, state->segments, threads_, msp_.segment_plane_confirmation);
+    SegmentPlaneRules rules;
+    rules.own_support = msp_.segment_plane_own_support;
+    rules.confirm = msp_.segment_plane_confirmation;
+    rules.open_sky = msp_.open_sky;
+    const SegmentPlanesReport r =
+        ApplySegmentPlanes(params, state->segments, threads_, rules, &state->open_sky);
+    const double pixels = params.state.width * params.state.height;
     Logf(kLogDetail,
-         "  segment planes: %d of %d segments, %.1f%% of pixels offered, %.1f%% took; %.2f s\n",
-         r.num_planes, r.num_segments,
-         100.0 * r.num_offered / (params.state.width * params.state.height),
-         100.0 * r.num_taken / (params.state.width * params.state.height), SecondsSince(t0));
+         "  segment planes: %d of %d segments, %.1f%% of pixels offered, %.1f%% took, %.1f%% "
+         "open sky; %.2f s\n",
+         r.num_planes, r.num_segments, 100.0 * r.num_offered / pixels,
+         100.0 * r.num_taken / pixels, 100.0 * r.num_open_sky / pixels, SecondsSince(t0));
   }
 
   // The prior of one image after a deformable pass (docs/method.md section 4): its
@@ -513,12 +519,16 @@ class CpuRunner {
     return UpsampleStateNearest(cache_.Take(ref), coarse_cam, cam);
   }
 
-  void WriteOutputs(const Pass& pass, const core::PassParams& params, const Problem& problem) {
+  // The maps of the pass, without the open sky (`open_sky`, 1 = no surface;
+  // may be empty).
+  void WriteOutputs(const Pass& pass, const core::PassParams& params, const Problem& problem,
+                    const std::vector<uint8_t>& open_sky) {
     if (sink_.HasFinalOutput(problem.ref)) return;  // resumed run: keep what exists
     DenseMap depth, normal;
     if (pass.output == PassOutput::kUnfiltered) {
       // As COLMAP: unfiltered photometric maps, input of the geometric stage.
       ExtractMaps(params, nullptr, threads_, &depth, &normal);
+      ClearOpenSky(open_sky, &depth, &normal);
       sink_.Write(problem.ref, "photometric", depth, normal);
       return;
     }
@@ -530,6 +540,7 @@ class CpuRunner {
     filter.geom_max_error = static_cast<float>(pm_.filter_geom_consistency_max_cost);
     filter.textureless_by_geometry = msp_.filter_textureless_by_geometry ? 1 : 0;
     ExtractMaps(params, pm_.filter ? &filter : nullptr, threads_, &depth, &normal);
+    ClearOpenSky(open_sky, &depth, &normal);
     // Pictures before maps: a run stopped between them redoes the view, so
     // every view with final maps has its pictures.
     if (pass.map_previews) sink_.WriteMapPreviews(problem.ref, depth, normal);

@@ -33,6 +33,10 @@ struct PixelState {
   // (SegmentPlaneLabels), made by the round's first pass that needs them;
   // empty before, and after a spill (not saved: made again).
   std::vector<int32_t> segments;
+  // The open-sky pixels (open_sky.h) the round's last segment-plane step
+  // found, which the next passes leave without a plane; empty when none, and
+  // made again with the segments.
+  std::vector<uint8_t> open_sky;
   // In a geometric pass, once it has updated this image: the depth before,
   // which the pass's later images read (passes are Jacobi); else empty.
   std::vector<float> previous_depth;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "base/parallel_for.h"
 #include "core/math/plane.h"
@@ -11,6 +12,7 @@
 #include "core/patch_match/geometric_cost.h"
 #include "core/patch_match/local_refine.h"
 #include "core/patch_match/segment_plane.h"
+#include "patch_match/open_sky.h"
 #include "prior/multiscale_segmentation.h"
 
 namespace msp {
@@ -43,6 +45,9 @@ constexpr float kMinInlierShare = 0.5f;
 // axis of their pixel positions at least this share of the segment's. Points
 // along one crease fit every plane through it.
 constexpr float kMinSpreadShare = 0.2f;
+// Two planes are the same surface when their normals are within this angle
+// (and they share the border pixel): cos(10 degrees).
+constexpr float kSamePlaneCos = 0.985f;
 // A textureless pixel takes its segment's plane unless that costs this much
 // more than its own (costs of noise-level windows differ by about this much).
 constexpr float kTexturelessMargin = 0.1f;
@@ -130,6 +135,12 @@ void RefitPlane(const std::vector<const SupportPoint*>& inliers, SegmentPlane* p
 
 // RANSAC over triples of the support, scored on an even subsample of large
 // supports, then a least-squares refit on the inliers and the checks.
+// Whether inliers at `positions` span two image directions of a segment
+// whose pixels spread `segment_spread` (SecondSpread).
+bool Spans(const std::vector<PixelPosition>& positions, double segment_spread) {
+  return SecondSpread(positions) >= kMinSpreadShare * kMinSpreadShare * segment_spread;
+}
+
 SegmentPlane FitOnePlane(const core::PassParams& p, float focal_baseline,
                          const std::vector<SupportPoint>& support, double segment_spread,
                          uint64_t key) {
@@ -171,16 +182,37 @@ SegmentPlane FitOnePlane(const core::PassParams& p, float focal_baseline,
   best.num_inliers = static_cast<int>(positions.size());
   const bool supported =
       best.num_inliers >= kMinInliers && best.num_inliers >= kMinInlierShare * support.size();
-  const bool spans = SecondSpread(positions) >= kMinSpreadShare * kMinSpreadShare * segment_spread;
-  best.accepted = supported && spans;
+  best.accepted = supported && Spans(positions, segment_spread);
   return best;
+}
+
+// Whether support point `s` of segment `id` is borrowed: another segment at
+// s or 4-adjacent to it has a plane of its own (`fitted`: at least
+// kMinInliers inliers, accepted or not: a wall whose plane misses the spread
+// test still owns its edge) with nearly the same normal (kSamePlaneCos) and
+// s among its inliers.
+bool Borrowed(const core::PassParams& p, float focal_baseline, const std::vector<int32_t>& labels,
+              const std::vector<SegmentPlane>& fitted, int id, const SupportPoint& s) {
+  const core::PixelStateView& state = p.state;
+  const int nc[5] = {s.col, s.col - 1, s.col + 1, s.col, s.col};
+  const int nr[5] = {s.row, s.row, s.row, s.row - 1, s.row + 1};
+  for (int k = 0; k < 5; ++k) {
+    if (nc[k] < 0 || nr[k] < 0 || nc[k] >= state.width || nr[k] >= state.height) continue;
+    const int other = labels[state.Index(nc[k], nr[k])];
+    if (other <= 0 || other == id || fitted[other].num_inliers < kMinInliers) continue;
+    const SegmentPlane& plane = fitted[other];
+    if (std::fabs(core::Dot(plane.normal, fitted[id].normal)) < kSamePlaneCos) continue;
+    if (IsInlier(p, focal_baseline, s, plane.normal, plane.point)) return true;
+  }
+  return false;
 }
 
 }  // namespace
 
 std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
                                            const std::vector<int32_t>& labels,
-                                           const std::vector<uint8_t>& reliable, uint64_t key) {
+                                           const std::vector<uint8_t>& reliable, uint64_t key,
+                                           bool own_support) {
   const core::PixelStateView& s = params.state;
   int num_segments = 0;
   for (int32_t l : labels) num_segments = std::max(num_segments, static_cast<int>(l));
@@ -210,10 +242,26 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
     }
   }
   const float focal_baseline = params.ref_camera.fx * core::MeanBaseline(params, 0u);
-  std::vector<SegmentPlane> planes(num_segments + 1);
+  std::vector<SegmentPlane> fitted(num_segments + 1);
+  std::vector<double> spread(num_segments + 1, 0.0);
   for (int id = 1; id <= num_segments; ++id) {
-    planes[id] = FitOnePlane(params, focal_baseline, support[id], SecondSpread(pixels[id]),
+    spread[id] = SecondSpread(pixels[id]);
+    fitted[id] = FitOnePlane(params, focal_baseline, support[id], spread[id],
                              core::Mix64(key ^ static_cast<uint64_t>(id)));
+  }
+  if (!own_support) return fitted;
+  // The support rule, against the planes as fitted (the order of the
+  // segments does not matter).
+  std::vector<SegmentPlane> planes = fitted;
+  for (int id = 1; id <= num_segments; ++id) {
+    SegmentPlane& plane = planes[id];
+    if (!plane.accepted) continue;
+    std::vector<PixelPosition> own;
+    for (const SupportPoint* s : Inliers(params, focal_baseline, support[id], plane)) {
+      if (!Borrowed(params, focal_baseline, labels, fitted, id, *s)) own.push_back({s->col, s->row});
+    }
+    plane.num_own = static_cast<int>(own.size());
+    plane.accepted = plane.num_own >= kMinInliers && Spans(own, spread[id]);
   }
   return planes;
 }
@@ -276,7 +324,8 @@ void ConfirmSegmentPlanes(const core::PassParams& params, const std::vector<int3
 
 SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
                                        const std::vector<int32_t>& labels, int num_threads,
-                                       bool confirm) {
+                                       const SegmentPlaneRules& rules,
+                                       std::vector<uint8_t>* open_sky) {
   const core::PixelStateView& s = params.state;
   const int n = s.width * s.height;
   if (labels.size() != static_cast<size_t>(n)) {
@@ -294,9 +343,14 @@ SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
     }
   });
   const uint64_t key = core::RngKey(params.seed, params.image_id, params.pass_id, 0x5E6u, 0u);
-  std::vector<SegmentPlane> planes = FitSegmentPlanes(params, labels, reliable, key);
-  if (confirm) ConfirmSegmentPlanes(params, labels, num_threads, &planes);
+  std::vector<SegmentPlane> planes =
+      FitSegmentPlanes(params, labels, reliable, key, rules.own_support);
+  if (rules.confirm) ConfirmSegmentPlanes(params, labels, num_threads, &planes);
   SegmentPlanesReport report;
+  std::vector<uint8_t> sky;
+  if (rules.open_sky) sky = OpenSkyPixels(params, labels, planes, texture);
+  report.num_open_sky = static_cast<int>(std::count(sky.begin(), sky.end(), 1));
+  if (open_sky != nullptr) *open_sky = std::move(sky);
   report.num_segments = static_cast<int>(planes.size()) - 1;
   for (const SegmentPlane& plane : planes) report.num_planes += plane.accepted ? 1 : 0;
   std::vector<int> taken(s.height, 0), offered(s.height, 0);

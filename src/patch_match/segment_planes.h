@@ -22,7 +22,10 @@ struct SegmentPlane {
   core::Vec3 point;     // a point of the plane, camera frame
   int num_support = 0;  // reliable pixels on or next to the segment
   int num_inliers = 0;
-  bool accepted = false;  // enough inliers, spanning two image directions
+  // Inliers that are the segment's own evidence: not on its border with a
+  // neighbour whose plane is the same (FitSegmentPlanes).
+  int num_own = 0;
+  bool accepted = false;  // enough own inliers, spanning two image directions
 };
 
 struct SegmentPlanesReport {
@@ -30,15 +33,31 @@ struct SegmentPlanesReport {
   int num_planes = 0;   // segments whose plane passed the checks
   int num_offered = 0;  // pixels in those segments
   int num_taken = 0;    // pixels that took the segment's plane
+  int num_open_sky = 0;  // pixels of open-sky segments (their maps are left empty)
+};
+
+// The rules of the step, each with its --MspStereo.* switch.
+struct SegmentPlaneRules {
+  bool own_support = true;  // FitSegmentPlanes' support rule
+  bool confirm = false;     // ConfirmSegmentPlanes
+  bool open_sky = true;     // OpenSkyPixels (open_sky.h) cleared
 };
 
 // Fits the plane of every segment of `labels` (ids 1..K, 0 = none) from the
-// pixels of `reliable` (1 = reliable) on it or 4-adjacent to it, RANSAC seeded by `key`; segments
-// without a well-supported plane that spans two image directions are not
-// accepted. Index = segment id.
+// pixels of `reliable` (1 = reliable) on it or 4-adjacent to it, RANSAC seeded
+// by `key`; segments without a well-supported plane that spans two image
+// directions are not accepted. Then the support rule: an inlier on the
+// segment's border with a neighbour whose own plane is the same plane is
+// borrowed (the edge belongs to the neighbour: a window's outline against the
+// sky, a roofline, a silhouette), and a plane is accepted only on its own
+// inliers. A crease lies on two different planes and counts for both; a
+// segment whose support lies only where a coplanar neighbour ends is that
+// neighbour extended across a colour edge, with no evidence of its own.
+// Index = segment id. Without `own_support`, every inlier counts.
 std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
                                            const std::vector<int32_t>& labels,
-                                           const std::vector<uint8_t>& reliable, uint64_t key);
+                                           const std::vector<uint8_t>& reliable, uint64_t key,
+                                           bool own_support = true);
 
 // The colour segments of segment planes: `color` (the reference image at the
 // pass's level, RGB planes) cut by `segmenter`, ids 1..K. The same for every
@@ -57,9 +76,12 @@ void ConfirmSegmentPlanes(const core::PassParams& params, const std::vector<int3
                           int num_threads, std::vector<SegmentPlane>* planes);
 
 // The whole step on the state of `params`: fits the planes of the segments
-// `labels` (SegmentPlaneLabels), confirms them when `confirm`, offers them.
+// `labels` (SegmentPlaneLabels) under `rules`, offers them, and writes the
+// open-sky pixels to `open_sky` (when given; empty when there are none), which
+// the pass's maps leave empty.
 SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
                                        const std::vector<int32_t>& labels, int num_threads,
-                                       bool confirm = false);
+                                       const SegmentPlaneRules& rules = SegmentPlaneRules(),
+                                       std::vector<uint8_t>* open_sky = nullptr);
 
 }  // namespace msp

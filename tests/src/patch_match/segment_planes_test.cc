@@ -123,6 +123,122 @@ TEST(SegmentPlanes, ConfirmationKeepsAPlaneTheViewsSeeAndDropsOneTheyContradict)
   p.src[0].depth = no_depth;
 }
 
+// A window in a wall: segment 2 is the rectangle W, segment 1 the rest; all
+// of the support lies on the wall's tilted plane. The wall's own support is
+// the L of its creases; along W's outline the matched pixels (on both sides
+// of the outline, as a matching window straddles it) are the wall's edge.
+// With `interior`, W also has matched pixels of its own inside it.
+constexpr int kWindowCols[2] = {60, 120};
+constexpr int kWindowRows[2] = {20, 80};
+
+bool InWindow(int col, int row) {
+  return col >= kWindowCols[0] && col < kWindowCols[1] && row >= kWindowRows[0] &&
+         row < kWindowRows[1];
+}
+
+// On W's outline: inside W next to the wall, or in the wall next to W.
+bool OnWindowOutline(int col, int row) {
+  const bool in = InWindow(col, row);
+  const int nc[4] = {col - 1, col + 1, col, col};
+  const int nr[4] = {row, row, row - 1, row + 1};
+  for (int k = 0; k < 4; ++k) {
+    if (InWindow(nc[k], nr[k]) != in) return true;
+  }
+  return false;
+}
+
+// Inside W, away from its outline: a cross through its middle.
+bool InsideWindowCross(int col, int row) {
+  return InWindow(col, row) && !OnWindowOutline(col, row) &&
+         (col == (kWindowCols[0] + kWindowCols[1]) / 2 ||
+          row == (kWindowRows[0] + kWindowRows[1]) / 2) &&
+         col > kWindowCols[0] + 4 && col < kWindowCols[1] - 5 && row > kWindowRows[0] + 4 &&
+         row < kWindowRows[1] - 5;
+}
+
+Fixture WallWithWindow(bool interior) {
+  static bool with_interior = false;
+  with_interior = interior;
+  Fixture f = MakeFixture(
+      [](int col, int row) {
+        return LShape(col, row) || OnWindowOutline(col, row) ||
+               (with_interior && InsideWindowCross(col, row));
+      },
+      0);
+  const core::PixelStateView& s = f.scene.params.state;
+  for (int row = 0; row < s.height; ++row) {
+    for (int col = 0; col < s.width; ++col)
+      f.labels[s.Index(col, row)] = InWindow(col, row) ? 2 : 1;
+  }
+  return f;
+}
+
+TEST(SegmentPlanes, BorderOnlySupportGetsNoPlane) {
+  const Fixture f = WallWithWindow(/*interior=*/false);
+  const std::vector<SegmentPlane> planes =
+      FitSegmentPlanes(f.scene.params, f.labels, f.reliable, 7u);
+  ASSERT_EQ(planes.size(), 3u);
+  EXPECT_TRUE(planes[1].accepted);  // the wall: its creases are its own
+  EXPECT_GT(planes[1].num_own, 0);
+  EXPECT_LT(planes[1].num_own, planes[1].num_inliers);  // W's outline is not
+  // W: a plane fits its outline (every inlier), but every inlier is where the
+  // wall, holding the same plane, ends.
+  EXPECT_GT(planes[2].num_inliers, 100);
+  EXPECT_EQ(planes[2].num_own, 0);
+  EXPECT_FALSE(planes[2].accepted);
+  // Without the rule the outline, which spans two directions, gives W the
+  // wall's plane.
+  const std::vector<SegmentPlane> every_inlier =
+      FitSegmentPlanes(f.scene.params, f.labels, f.reliable, 7u, /*own_support=*/false);
+  EXPECT_TRUE(every_inlier[2].accepted);
+}
+
+TEST(SegmentPlanes, InteriorSupportGetsAPlane) {
+  const Fixture f = WallWithWindow(/*interior=*/true);
+  const std::vector<SegmentPlane> planes =
+      FitSegmentPlanes(f.scene.params, f.labels, f.reliable, 7u);
+  EXPECT_TRUE(planes[1].accepted);
+  EXPECT_TRUE(planes[2].accepted);
+  EXPECT_GT(planes[2].num_own, 50);  // the cross inside W
+  EXPECT_LT(planes[2].num_own, planes[2].num_inliers);
+}
+
+// A crease is two different planes meeting: the support on it counts for both.
+TEST(SegmentPlanes, SupportOnACreaseIsOwnForBothPlanes) {
+  Fixture f = MakeFixture(LShape, 0);
+  const core::PassParams& p = f.scene.params;
+  const core::PixelStateView& s = p.state;
+  // Segment 2, the right half, holds a second plane through the crease: the
+  // line the tilted plane shows along column `split`, the tilted normal
+  // turned 30 degrees about it.
+  const int split = s.width / 2;
+  const core::Camera& cam = p.ref_camera;
+  const core::Vec3 a = core::BackProject(cam, split, 0.0f, TiltedDepth(cam, split, 0));
+  const core::Vec3 b =
+      core::BackProject(cam, split, s.height - 1.0f, TiltedDepth(cam, split, s.height - 1));
+  const core::Vec3 axis = core::Normalized(b - a);
+  const float turn = 30.0f * 3.14159265f / 180.0f;
+  const core::Vec3 other_normal = core::Normalized(
+      std::cos(turn) * kTiltedNormal + std::sin(turn) * core::Cross(axis, kTiltedNormal));
+  for (int row = 0; row < s.height; ++row) {
+    for (int col = 0; col < s.width; ++col) {
+      const int i = s.Index(col, row);
+      f.labels[i] = col < split ? 1 : 2;
+      // Support: the two columns of the crease and the bottom band.
+      f.reliable[i] = col == split - 1 || col == split || row >= 145;
+      if (!f.reliable[i]) continue;
+      s.depth[i] = col < split ? TiltedDepth(cam, col, row)
+                               : core::HypothesisOnPlane(cam, col, row, other_normal, a).depth;
+    }
+  }
+  const std::vector<SegmentPlane> planes = FitSegmentPlanes(p, f.labels, f.reliable, 7u);
+  ASSERT_EQ(planes.size(), 3u);
+  EXPECT_TRUE(planes[1].accepted);
+  EXPECT_TRUE(planes[2].accepted);
+  EXPECT_EQ(planes[1].num_own, planes[1].num_inliers);
+  EXPECT_EQ(planes[2].num_own, planes[2].num_inliers);
+}
+
 TEST(SegmentPlanes, RejectsSupportAlongOneLine) {
   // Every plane through the band nearly fits it: no plane for the segment.
   const Fixture f = MakeFixture(TwoRows, 0);

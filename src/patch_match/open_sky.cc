@@ -1,0 +1,79 @@
+#include "patch_match/open_sky.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "core/patch_match/window_texture.h"
+
+namespace msp {
+namespace {
+
+// Bright: the sky of a daylight photograph and a blown-out window sit near
+// the top of the range (the bundled scene's sky 0.86-0.9, its walls at most
+// 0.78 of full scale).
+constexpr double kMinMeanGrey = 0.8;
+// Untextured: at most this share of the segment's matching windows holds
+// texture (the band along its outline does: the windows straddle the edge).
+constexpr double kMaxTexturedShare = 0.5;
+// Open to the border: this many of its pixels lie on the image's outermost
+// rows and columns (a corner pixel is not an opening).
+constexpr int kMinBorderPixels = 3;
+
+struct SegmentStats {
+  long pixels = 0;
+  long border = 0;
+  long textured = 0;
+  double grey = 0.0;
+};
+
+}  // namespace
+
+std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params,
+                                   const std::vector<int32_t>& labels,
+                                   const std::vector<SegmentPlane>& planes,
+                                   const std::vector<float>& texture) {
+  const core::PixelStateView& s = params.state;
+  std::vector<SegmentStats> stats(planes.size());
+  for (int row = 0; row < s.height; ++row) {
+    for (int col = 0; col < s.width; ++col) {
+      const int i = s.Index(col, row);
+      if (labels[i] <= 0) continue;
+      SegmentStats& segment = stats[labels[i]];
+      ++segment.pixels;
+      segment.border += col == 0 || row == 0 || col + 1 == s.width || row + 1 == s.height;
+      segment.textured += texture[i] >= core::kTexturedWindowStd;
+      segment.grey += params.ref_image.At(col, row);
+    }
+  }
+  std::vector<uint8_t> sky_segment(planes.size(), 0);
+  bool any = false;
+  for (size_t id = 1; id < planes.size(); ++id) {
+    const SegmentStats& segment = stats[id];
+    if (segment.pixels == 0 || planes[id].accepted) continue;
+    sky_segment[id] = segment.border >= kMinBorderPixels &&
+                      segment.grey >= kMinMeanGrey * segment.pixels &&
+                      segment.textured <= kMaxTexturedShare * segment.pixels;
+    any = any || sky_segment[id];
+  }
+  if (!any) return {};
+  std::vector<uint8_t> sky(labels.size(), 0);
+  for (size_t i = 0; i < labels.size(); ++i) sky[i] = labels[i] > 0 && sky_segment[labels[i]];
+  return sky;
+}
+
+void ClearOpenSky(const std::vector<uint8_t>& open_sky, DenseMap* depth, DenseMap* normal) {
+  if (open_sky.empty()) return;
+  const size_t n = static_cast<size_t>(depth->width) * depth->height;
+  if (open_sky.size() != n || normal->data.size() != 3 * n) {
+    throw std::logic_error("open-sky mask and maps differ in size");
+  }
+  for (int row = 0; row < depth->height; ++row) {
+    for (int col = 0; col < depth->width; ++col) {
+      if (!open_sky[static_cast<size_t>(row) * depth->width + col]) continue;
+      depth->At(row, col) = 0.0f;
+      for (int c = 0; c < 3; ++c) normal->At(row, col, c) = 0.0f;
+    }
+  }
+}
+
+}  // namespace msp

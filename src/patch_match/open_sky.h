@@ -1,0 +1,35 @@
+// Open sky (docs/method.md section 2.11): segments that nothing in the images
+// says are a surface. Bright, untextured and open to the image border, with
+// no plane of their own after the segment planes' support rule: the sky above
+// a roofline or through a window, a white-out background. Every view sees the
+// same smooth brightness there whatever depth it is given, so planes
+// propagated from the surface around agree across the views and pass the
+// geometric checks; only the absence of evidence tells. The passes leave
+// these pixels their planes (they carry the surrounding surface's plane
+// across, as the wall around a window), the written maps leave them empty.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "base/dense_map.h"
+#include "core/patch_match/patch_match_kernel.h"
+#include "patch_match/segment_planes.h"
+
+namespace msp {
+
+// 1 at the pixels of every segment of `labels` (ids 1..K) that touches the
+// image border, whose mean grey in `params.ref_image` is bright, whose pixels
+// are mostly untextured (`texture`: core::WindowTextureStd per pixel), and
+// whose plane (`planes`, FitSegmentPlanes) is not accepted; else 0. Empty
+// when no pixel is.
+std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params,
+                                   const std::vector<int32_t>& labels,
+                                   const std::vector<SegmentPlane>& planes,
+                                   const std::vector<float>& texture);
+
+// Depth 0 and normal 0 in `depth` and `normal` (a map's size) where
+// `open_sky` is 1; nothing when it is empty.
+void ClearOpenSky(const std::vector<uint8_t>& open_sky, DenseMap* depth, DenseMap* normal);
+
+}  // namespace msp

@@ -1,0 +1,96 @@
+#include "patch_match/open_sky.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+#include "core/patch_match/window_texture.h"
+
+namespace msp {
+namespace {
+
+// A 40x30 image cut into vertical strips of 8 columns, segments 1..5 from
+// the left; every strip reaches the top and bottom borders unless `closed`.
+struct Strips {
+  static constexpr int kWidth = 40, kHeight = 30, kStrip = 8;
+  std::vector<float> grey = std::vector<float>(kWidth * kHeight, 0.9f);  // bright
+  std::vector<int32_t> labels = std::vector<int32_t>(kWidth * kHeight, 0);
+  std::vector<float> texture = std::vector<float>(kWidth * kHeight, 0.0f);  // untextured
+  std::vector<SegmentPlane> planes = std::vector<SegmentPlane>(6);
+  core::PassParams params;
+
+  Strips() {
+    for (int row = 0; row < kHeight; ++row) {
+      for (int col = 0; col < kWidth; ++col) labels[row * kWidth + col] = 1 + col / kStrip;
+    }
+  }
+  // Segment `id`'s pixels set to `value` in `field`.
+  template <typename T>
+  void Set(int id, std::vector<T>* field, T value) {
+    for (size_t i = 0; i < labels.size(); ++i) {
+      if (labels[i] == id) (*field)[i] = value;
+    }
+  }
+  std::vector<uint8_t> Run() {
+    params.state.width = kWidth;
+    params.state.height = kHeight;
+    params.ref_image = core::ImageView{grey.data(), kWidth, kHeight, kWidth};
+    return OpenSkyPixels(params, labels, planes, texture);
+  }
+  bool Marked(const std::vector<uint8_t>& sky, int id) const {
+    for (size_t i = 0; i < labels.size(); ++i) {
+      if (labels[i] == id && !sky[i]) return false;
+    }
+    return true;
+  }
+};
+
+// Only the segment with no plane of its own that is bright, untextured and
+// open to the border is sky; each of the others misses one condition.
+TEST(OpenSky, BrightUntexturedOpenSegmentWithoutAPlaneIsSky) {
+  Strips s;
+  s.planes[2].accepted = true;                     // 2: a plane of its own (a white wall)
+  s.Set(3, &s.grey, 0.5f);                         // 3: not bright
+  s.Set(4, &s.texture, core::kTexturedWindowStd);  // 4: textured
+  // 5: closed: moved off the border by giving its border pixels to segment 4.
+  for (int row = 0; row < Strips::kHeight; ++row) {
+    for (int col = 4 * Strips::kStrip; col < Strips::kWidth; ++col) {
+      const bool border = row == 0 || row + 1 == Strips::kHeight || col + 1 == Strips::kWidth;
+      if (border) s.labels[row * Strips::kWidth + col] = 4;
+    }
+  }
+  const std::vector<uint8_t> sky = s.Run();
+  ASSERT_EQ(sky.size(), s.labels.size());
+  EXPECT_TRUE(s.Marked(sky, 1));
+  int marked = 0;
+  for (size_t i = 0; i < sky.size(); ++i) {
+    marked += sky[i];
+    if (sky[i]) EXPECT_EQ(s.labels[i], 1);
+  }
+  EXPECT_EQ(marked, Strips::kStrip * Strips::kHeight);
+}
+
+TEST(OpenSky, NothingMarkedGivesAnEmptyMask) {
+  Strips s;
+  for (SegmentPlane& plane : s.planes) plane.accepted = true;
+  EXPECT_TRUE(s.Run().empty());
+}
+
+TEST(OpenSky, ClearedMapsKeepEverythingElse) {
+  DenseMap depth(3, 2, 1, 2.0f), normal(3, 2, 3, 0.5f);
+  const std::vector<uint8_t> sky = {0, 1, 0, 0, 0, 1};
+  ClearOpenSky(sky, &depth, &normal);
+  EXPECT_EQ(depth.At(0, 1), 0.0f);
+  EXPECT_EQ(depth.At(1, 2), 0.0f);
+  EXPECT_EQ(normal.At(0, 1, 2), 0.0f);
+  EXPECT_EQ(depth.At(0, 0), 2.0f);
+  EXPECT_EQ(normal.At(1, 1, 0), 0.5f);
+  ClearOpenSky({}, &depth, &normal);  // no sky: nothing changes
+  EXPECT_EQ(depth.At(0, 0), 2.0f);
+  EXPECT_THROW(ClearOpenSky({1, 0}, &depth, &normal), std::logic_error);
+}
+
+}  // namespace
+}  // namespace msp

@@ -18,6 +18,15 @@ constexpr double kMaxTexturedShare = 0.5;
 // Open to the border: this many of its pixels lie on the image's outermost
 // rows and columns (a corner pixel is not an opening).
 constexpr int kMinBorderPixels = 3;
+// Evidence of its own: an accepted plane with at least this share of its
+// inliers its own. The sky in a window keeps a few matched pixels of its own
+// where the wall around it is cut into segments without a plane of theirs,
+// but most of its support is the wall's edge.
+constexpr double kMinOwnShare = 0.5;
+
+bool HasOwnPlane(const SegmentPlane& plane) {
+  return plane.accepted && plane.num_own >= kMinOwnShare * plane.num_inliers;
+}
 
 struct SegmentStats {
   long pixels = 0;
@@ -49,7 +58,7 @@ std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params,
   bool any = false;
   for (size_t id = 1; id < planes.size(); ++id) {
     const SegmentStats& segment = stats[id];
-    if (segment.pixels == 0 || planes[id].accepted) continue;
+    if (segment.pixels == 0 || HasOwnPlane(planes[id])) continue;
     sky_segment[id] = segment.border >= kMinBorderPixels &&
                       segment.grey >= kMinMeanGrey * segment.pixels &&
                       segment.textured <= kMaxTexturedShare * segment.pixels;

@@ -1,6 +1,6 @@
 // Open sky (docs/method.md section 2.11): segments that nothing in the images
 // says are a surface. Bright, untextured and open to the image border, with
-// no plane of their own after the segment planes' support rule: the sky above
+// no plane mostly their own after the segment planes' support rule: the sky above
 // a roofline or through a window, a white-out background. Every view sees the
 // same smooth brightness there whatever depth it is given, so planes
 // propagated from the surface around agree across the views and pass the
@@ -21,8 +21,8 @@ namespace msp {
 // 1 at the pixels of every segment of `labels` (ids 1..K) that touches the
 // image border, whose mean grey in `params.ref_image` is bright, whose pixels
 // are mostly untextured (`texture`: core::WindowTextureStd per pixel), and
-// whose plane (`planes`, FitSegmentPlanes) is not accepted; else 0. Empty
-// when no pixel is.
+// whose plane (`planes`, FitSegmentPlanes) is not accepted or has fewer than
+// half of its inliers its own; else 0. Empty when no pixel is.
 std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params,
                                    const std::vector<int32_t>& labels,
                                    const std::vector<SegmentPlane>& planes,

@@ -11,6 +11,15 @@
 namespace msp {
 namespace {
 
+// An accepted plane with 100 inliers, `own` of them its own.
+SegmentPlane OwnPlane(int own) {
+  SegmentPlane plane;
+  plane.accepted = true;
+  plane.num_inliers = 100;
+  plane.num_own = own;
+  return plane;
+}
+
 // A 40x30 image cut into vertical strips of 8 columns, segments 1..5 from
 // the left; every strip reaches the top and bottom borders unless `closed`.
 struct Strips {
@@ -51,7 +60,7 @@ struct Strips {
 // open to the border is sky; each of the others misses one condition.
 TEST(OpenSky, BrightUntexturedOpenSegmentWithoutAPlaneIsSky) {
   Strips s;
-  s.planes[2].accepted = true;                     // 2: a plane of its own (a white wall)
+  s.planes[2] = OwnPlane(60);                      // 2: a plane of its own (a white wall)
   s.Set(3, &s.grey, 0.5f);                         // 3: not bright
   s.Set(4, &s.texture, core::kTexturedWindowStd);  // 4: textured
   // 5: closed: moved off the border by giving its border pixels to segment 4.
@@ -72,9 +81,21 @@ TEST(OpenSky, BrightUntexturedOpenSegmentWithoutAPlaneIsSky) {
   EXPECT_EQ(marked, Strips::kStrip * Strips::kHeight);
 }
 
+// A plane mostly borrowed (the sky in a window whose wall is cut into
+// segments without planes keeps a few matched pixels of its own) is no
+// evidence of a surface.
+TEST(OpenSky, APlaneMostlyBorrowedIsNoEvidence) {
+  Strips s;
+  for (int id = 2; id <= 5; ++id) s.planes[id] = OwnPlane(100);
+  s.planes[1] = OwnPlane(49);
+  EXPECT_TRUE(s.Marked(s.Run(), 1));
+  s.planes[1] = OwnPlane(50);
+  EXPECT_TRUE(s.Run().empty());
+}
+
 TEST(OpenSky, NothingMarkedGivesAnEmptyMask) {
   Strips s;
-  for (SegmentPlane& plane : s.planes) plane.accepted = true;
+  for (SegmentPlane& plane : s.planes) plane = OwnPlane(100);
   EXPECT_TRUE(s.Run().empty());
 }
 

@@ -1,6 +1,7 @@
 #include "patch_match/open_sky.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/patch_match/window_texture.h"
@@ -24,6 +25,12 @@ constexpr int kMinBorderPixels = 3;
 // but most of its support is the wall's edge.
 constexpr double kMinOwnShare = 0.5;
 
+// The outline's mixed pixels (a pixel half sky, half roofline) are often cut
+// into the surface's segment: the sky takes the pixels next to it, up to
+// this many pixels deep, whose grey is nearer its own mean than their
+// segment's.
+constexpr int kMixedPixelDepth = 2;
+
 bool HasOwnPlane(const SegmentPlane& plane) {
   return plane.accepted && plane.num_own >= kMinOwnShare * plane.num_inliers;
 }
@@ -34,6 +41,35 @@ struct SegmentStats {
   long textured = 0;
   double grey = 0.0;
 };
+
+// Grows `sky_of` (per pixel, its open-sky segment id, or 0) into the mixed
+// pixels of its outline: a pixel next to the sky whose grey is nearer the
+// sky's mean than its own segment's, kMixedPixelDepth deep.
+void TakeMixedPixels(const core::PassParams& params, const std::vector<int32_t>& labels,
+                     const std::vector<SegmentStats>& stats, std::vector<int32_t>* sky_of) {
+  const core::PixelStateView& s = params.state;
+  const auto mean_grey = [&](int id) { return stats[id].grey / stats[id].pixels; };
+  for (int step = 0; step < kMixedPixelDepth; ++step) {
+    std::vector<int32_t> grown = *sky_of;
+    for (int row = 0; row < s.height; ++row) {
+      for (int col = 0; col < s.width; ++col) {
+        const int i = s.Index(col, row);
+        if ((*sky_of)[i] > 0 || labels[i] <= 0) continue;
+        const double grey = params.ref_image.At(col, row);
+        const int nc[4] = {col - 1, col + 1, col, col};
+        const int nr[4] = {row, row, row - 1, row + 1};
+        for (int k = 0; k < 4 && grown[i] == 0; ++k) {
+          if (nc[k] < 0 || nr[k] < 0 || nc[k] >= s.width || nr[k] >= s.height) continue;
+          const int id = (*sky_of)[s.Index(nc[k], nr[k])];
+          if (id > 0 && std::fabs(grey - mean_grey(id)) < std::fabs(grey - mean_grey(labels[i]))) {
+            grown[i] = id;
+          }
+        }
+      }
+    }
+    sky_of->swap(grown);
+  }
+}
 
 }  // namespace
 
@@ -54,19 +90,23 @@ std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params,
       segment.grey += params.ref_image.At(col, row);
     }
   }
-  std::vector<uint8_t> sky_segment(planes.size(), 0);
+  // Per pixel, the open-sky segment it belongs to (0: none).
+  std::vector<int32_t> sky_of(labels.size(), 0);
   bool any = false;
-  for (size_t id = 1; id < planes.size(); ++id) {
+  for (size_t i = 0; i < labels.size(); ++i) {
+    const int id = labels[i];
+    if (id <= 0 || HasOwnPlane(planes[id])) continue;
     const SegmentStats& segment = stats[id];
-    if (segment.pixels == 0 || HasOwnPlane(planes[id])) continue;
-    sky_segment[id] = segment.border >= kMinBorderPixels &&
-                      segment.grey >= kMinMeanGrey * segment.pixels &&
-                      segment.textured <= kMaxTexturedShare * segment.pixels;
-    any = any || sky_segment[id];
+    if (segment.border >= kMinBorderPixels && segment.grey >= kMinMeanGrey * segment.pixels &&
+        segment.textured <= kMaxTexturedShare * segment.pixels) {
+      sky_of[i] = id;
+      any = true;
+    }
   }
   if (!any) return {};
+  TakeMixedPixels(params, labels, stats, &sky_of);
   std::vector<uint8_t> sky(labels.size(), 0);
-  for (size_t i = 0; i < labels.size(); ++i) sky[i] = labels[i] > 0 && sky_segment[labels[i]];
+  for (size_t i = 0; i < labels.size(); ++i) sky[i] = sky_of[i] > 0;
   return sky;
 }
 

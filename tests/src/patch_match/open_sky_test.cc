@@ -93,6 +93,23 @@ TEST(OpenSky, APlaneMostlyBorrowedIsNoEvidence) {
   EXPECT_TRUE(s.Run().empty());
 }
 
+// The outline's mixed pixels: the sky takes the neighbours (two deep) whose
+// grey is nearer the sky's mean than their own segment's.
+TEST(OpenSky, TakesTheMixedPixelsOfItsOutline) {
+  Strips s;
+  for (int id = 2; id <= 5; ++id) s.Set(id, &s.grey, 0.5f);  // darker surfaces
+  for (int id = 2; id <= 5; ++id) s.planes[id] = OwnPlane(100);
+  const int row = 10, first = Strips::kStrip;  // segment 2 starts at column 8
+  for (int col = first; col < first + 4; ++col) s.grey[row * Strips::kWidth + col] = 0.8f;
+  s.grey[(row + 1) * Strips::kWidth + first] = 0.6f;  // nearer its own segment
+  const std::vector<uint8_t> sky = s.Run();
+  EXPECT_TRUE(s.Marked(sky, 1));
+  EXPECT_EQ(sky[row * Strips::kWidth + first], 1);
+  EXPECT_EQ(sky[row * Strips::kWidth + first + 1], 1);
+  EXPECT_EQ(sky[row * Strips::kWidth + first + 2], 0);  // three deep
+  EXPECT_EQ(sky[(row + 1) * Strips::kWidth + first], 0);
+}
+
 TEST(OpenSky, NothingMarkedGivesAnEmptyMask) {
   Strips s;
   for (SegmentPlane& plane : s.planes) plane = OwnPlane(100);

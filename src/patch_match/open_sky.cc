@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/patch_match/segment_plane.h"
 #include "core/patch_match/window_texture.h"
 
 namespace msp {
@@ -19,11 +20,17 @@ constexpr double kMaxTexturedShare = 0.5;
 // Open to the border: this many of its pixels lie on the image's outermost
 // rows and columns (a corner pixel is not an opening).
 constexpr int kMinBorderPixels = 3;
-// Evidence of its own: an accepted plane with at least this share of its
-// inliers its own. The sky in a window keeps a few matched pixels of its own
-// where the wall around it is cut into segments without a plane of theirs,
-// but most of its support is the wall's edge.
-constexpr double kMinOwnShare = 0.5;
+// Evidence of its own: an accepted plane that is not the plane the pixels
+// around the segment hold. The sky in a window keeps a few matched pixels of
+// its own where the wall around it is cut into thin segments whose fitted
+// planes are not the wall's, and so an accepted plane; but that plane is the
+// wall's, which the pixels all along its outline hold. A pixel outside the
+// outline holds the segment's plane when its normal is within 10 degrees and
+// its depth within 2 % of the plane's there; more than this share of them
+// do: the segment is a hole in that surface, not a surface.
+constexpr float kSamePlaneCos = 0.985f;
+constexpr float kSameDepth = 0.02f;
+constexpr double kMaxSurroundedShare = 0.5;
 
 // The outline's mixed pixels (a pixel half sky, half roofline) are often cut
 // into the surface's segment: the sky takes the pixels next to it, up to
@@ -31,16 +38,50 @@ constexpr double kMinOwnShare = 0.5;
 // segment's.
 constexpr int kMixedPixelDepth = 2;
 
-bool HasOwnPlane(const SegmentPlane& plane) {
-  return plane.accepted && plane.num_own >= kMinOwnShare * plane.num_inliers;
-}
-
 struct SegmentStats {
   long pixels = 0;
   long border = 0;
   long textured = 0;
   double grey = 0.0;
+  long outline = 0;           // pixels of other segments 4-adjacent to it (counted per adjacency)
+  long outline_on_plane = 0;  // of those, holding its plane
 };
+
+// Whether pixel j (at col, row) holds `plane`: see kSamePlaneCos, kSameDepth.
+bool HoldsPlane(const core::PassParams& params, int col, int row, const SegmentPlane& plane) {
+  const core::PixelStateView& s = params.state;
+  const int j = s.Index(col, row);
+  if (!(s.depth[j] > 0.0f)) return false;
+  const core::PlaneHypothesis held = s.Get(j);
+  if (std::fabs(core::Dot(held.normal, plane.normal)) < kSamePlaneCos) return false;
+  const float depth =
+      core::HypothesisOnPlane(params.ref_camera, col, row, plane.normal, plane.point).depth;
+  return std::fabs(depth - held.depth) <= kSameDepth * held.depth;
+}
+
+// Counts, for the segments `candidate` marks whose plane is accepted, the
+// pixels around their outline and those of them holding the segment's plane.
+void CountOutlines(const core::PassParams& params, const std::vector<int32_t>& labels,
+                   const std::vector<SegmentPlane>& planes, const std::vector<uint8_t>& candidate,
+                   std::vector<SegmentStats>* stats) {
+  const core::PixelStateView& s = params.state;
+  for (int row = 0; row < s.height; ++row) {
+    for (int col = 0; col < s.width; ++col) {
+      const int id = labels[s.Index(col, row)];
+      if (id <= 0 || !candidate[id] || !planes[id].accepted) continue;
+      const int nc[4] = {col - 1, col + 1, col, col};
+      const int nr[4] = {row, row, row - 1, row + 1};
+      for (int k = 0; k < 4; ++k) {
+        if (nc[k] < 0 || nr[k] < 0 || nc[k] >= s.width || nr[k] >= s.height) continue;
+        const int other = labels[s.Index(nc[k], nr[k])];
+        if (other <= 0 || other == id) continue;
+        SegmentStats& segment = (*stats)[id];
+        ++segment.outline;
+        segment.outline_on_plane += HoldsPlane(params, nc[k], nr[k], planes[id]);
+      }
+    }
+  }
+}
 
 // Grows `sky_of` (per pixel, its open-sky segment id, or 0) into the mixed
 // pixels of its outline: a pixel next to the sky whose grey is nearer the
@@ -90,20 +131,33 @@ std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params,
       segment.grey += params.ref_image.At(col, row);
     }
   }
-  // Per pixel, the open-sky segment it belongs to (0: none).
-  std::vector<int32_t> sky_of(labels.size(), 0);
+  // Bright, untextured and open to the border: then the plane decides.
+  std::vector<uint8_t> candidate(planes.size(), 0);
   bool any = false;
-  for (size_t i = 0; i < labels.size(); ++i) {
-    const int id = labels[i];
-    if (id <= 0 || HasOwnPlane(planes[id])) continue;
+  for (size_t id = 1; id < planes.size(); ++id) {
     const SegmentStats& segment = stats[id];
-    if (segment.border >= kMinBorderPixels && segment.grey >= kMinMeanGrey * segment.pixels &&
-        segment.textured <= kMaxTexturedShare * segment.pixels) {
-      sky_of[i] = id;
-      any = true;
-    }
+    candidate[id] = segment.pixels > 0 && segment.border >= kMinBorderPixels &&
+                    segment.grey >= kMinMeanGrey * segment.pixels &&
+                    segment.textured <= kMaxTexturedShare * segment.pixels;
+    any = any || candidate[id];
   }
   if (!any) return {};
+  CountOutlines(params, labels, planes, candidate, &stats);
+  std::vector<uint8_t> sky_segment(planes.size(), 0);
+  any = false;
+  for (size_t id = 1; id < planes.size(); ++id) {
+    const SegmentStats& segment = stats[id];
+    const bool own_plane =
+        planes[id].accepted && segment.outline_on_plane <= kMaxSurroundedShare * segment.outline;
+    sky_segment[id] = candidate[id] && !own_plane;
+    any = any || sky_segment[id];
+  }
+  if (!any) return {};
+  // Per pixel, the open-sky segment it belongs to (0: none).
+  std::vector<int32_t> sky_of(labels.size(), 0);
+  for (size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] > 0 && sky_segment[labels[i]]) sky_of[i] = labels[i];
+  }
   TakeMixedPixels(params, labels, stats, &sky_of);
   std::vector<uint8_t> sky(labels.size(), 0);
   for (size_t i = 0; i < labels.size(); ++i) sky[i] = sky_of[i] > 0;

@@ -6,19 +6,27 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/patch_match/segment_plane.h"
 #include "core/patch_match/window_texture.h"
+#include "tests/support/cameras.h"
 
 namespace msp {
 namespace {
 
-// An accepted plane with 100 inliers, `own` of them its own.
-SegmentPlane OwnPlane(int own) {
+// An accepted plane through (0, 0, 2) with normal `normal`.
+SegmentPlane AcceptedPlane(core::Vec3 normal) {
   SegmentPlane plane;
   plane.accepted = true;
-  plane.num_inliers = 100;
-  plane.num_own = own;
+  plane.num_inliers = plane.num_own = 100;
+  plane.normal = core::Normalized(normal);
+  plane.point = core::Vec3{0.0f, 0.0f, 2.0f};
   return plane;
 }
+
+// A plane of its own: tilted 30 degrees against the plane the pixels hold.
+SegmentPlane OwnPlane() { return AcceptedPlane(core::Vec3{0.577f, 0.0f, -1.0f}); }
+// The plane every pixel around holds.
+SegmentPlane SurroundingPlane() { return AcceptedPlane(core::Vec3{0.0f, 0.0f, -1.0f}); }
 
 // A 40x30 image cut into vertical strips of 8 columns, segments 1..5 from
 // the left; every strip reaches the top and bottom borders unless `closed`.
@@ -28,9 +36,15 @@ struct Strips {
   std::vector<int32_t> labels = std::vector<int32_t>(kWidth * kHeight, 0);
   std::vector<float> texture = std::vector<float>(kWidth * kHeight, 0.0f);  // untextured
   std::vector<SegmentPlane> planes = std::vector<SegmentPlane>(6);
+  // Every pixel holds the plane z = 2 facing the camera.
+  std::vector<float> depth = std::vector<float>(kWidth * kHeight, 2.0f);
+  std::vector<float> normal = std::vector<float>(3 * kWidth * kHeight, 0.0f);
+  std::vector<float> cost = std::vector<float>(kWidth * kHeight, 0.0f);
+  std::vector<uint32_t> mask = std::vector<uint32_t>(kWidth * kHeight, 0u);
   core::PassParams params;
 
   Strips() {
+    for (int i = 0; i < kWidth * kHeight; ++i) normal[2 * kWidth * kHeight + i] = -1.0f;
     for (int row = 0; row < kHeight; ++row) {
       for (int col = 0; col < kWidth; ++col) labels[row * kWidth + col] = 1 + col / kStrip;
     }
@@ -43,8 +57,9 @@ struct Strips {
     }
   }
   std::vector<uint8_t> Run() {
-    params.state.width = kWidth;
-    params.state.height = kHeight;
+    params.state = core::PixelStateView{depth.data(), normal.data(), cost.data(),
+                                        mask.data(),  kWidth,        kHeight};
+    params.ref_camera = test::CentredCamera(kWidth, kHeight);
     params.ref_image = core::ImageView{grey.data(), kWidth, kHeight, kWidth};
     return OpenSkyPixels(params, labels, planes, texture);
   }
@@ -60,7 +75,7 @@ struct Strips {
 // open to the border is sky; each of the others misses one condition.
 TEST(OpenSky, BrightUntexturedOpenSegmentWithoutAPlaneIsSky) {
   Strips s;
-  s.planes[2] = OwnPlane(60);                      // 2: a plane of its own (a white wall)
+  s.planes[2] = OwnPlane();                        // 2: a plane of its own (a white wall)
   s.Set(3, &s.grey, 0.5f);                         // 3: not bright
   s.Set(4, &s.texture, core::kTexturedWindowStd);  // 4: textured
   // 5: closed: moved off the border by giving its border pixels to segment 4.
@@ -81,15 +96,25 @@ TEST(OpenSky, BrightUntexturedOpenSegmentWithoutAPlaneIsSky) {
   EXPECT_EQ(marked, Strips::kStrip * Strips::kHeight);
 }
 
-// A plane mostly borrowed (the sky in a window whose wall is cut into
-// segments without planes keeps a few matched pixels of its own) is no
-// evidence of a surface.
-TEST(OpenSky, APlaneMostlyBorrowedIsNoEvidence) {
+// An accepted plane that the pixels all around the segment hold (the sky in
+// a window, given the wall's plane) is no evidence of a surface of its own.
+TEST(OpenSky, APlaneThePixelsAroundHoldIsNoEvidence) {
   Strips s;
-  for (int id = 2; id <= 5; ++id) s.planes[id] = OwnPlane(100);
-  s.planes[1] = OwnPlane(49);
+  for (int id = 2; id <= 5; ++id) s.planes[id] = OwnPlane();
+  s.planes[1] = SurroundingPlane();
   EXPECT_TRUE(s.Marked(s.Run(), 1));
-  s.planes[1] = OwnPlane(50);
+  s.planes[1] = OwnPlane();
+  EXPECT_TRUE(s.Run().empty());
+  // Half of the outline holding it is not yet surrounded: segment 2's
+  // pixels in the top half hold segment 1's tilted plane.
+  for (int row = 0; row < Strips::kHeight / 2; ++row) {
+    const int i = row * Strips::kWidth + Strips::kStrip;
+    const core::PlaneHypothesis h = core::HypothesisOnPlane(
+        s.params.ref_camera, Strips::kStrip, row, s.planes[1].normal, s.planes[1].point);
+    s.depth[i] = h.depth;
+    s.normal[i] = h.normal.x;
+    s.normal[2 * Strips::kWidth * Strips::kHeight + i] = h.normal.z;
+  }
   EXPECT_TRUE(s.Run().empty());
 }
 
@@ -98,7 +123,7 @@ TEST(OpenSky, APlaneMostlyBorrowedIsNoEvidence) {
 TEST(OpenSky, TakesTheMixedPixelsOfItsOutline) {
   Strips s;
   for (int id = 2; id <= 5; ++id) s.Set(id, &s.grey, 0.5f);  // darker surfaces
-  for (int id = 2; id <= 5; ++id) s.planes[id] = OwnPlane(100);
+  for (int id = 2; id <= 5; ++id) s.planes[id] = OwnPlane();
   const int row = 10, first = Strips::kStrip;  // segment 2 starts at column 8
   for (int col = first; col < first + 4; ++col) s.grey[row * Strips::kWidth + col] = 0.8f;
   s.grey[(row + 1) * Strips::kWidth + first] = 0.6f;  // nearer its own segment
@@ -112,7 +137,7 @@ TEST(OpenSky, TakesTheMixedPixelsOfItsOutline) {
 
 TEST(OpenSky, NothingMarkedGivesAnEmptyMask) {
   Strips s;
-  for (SegmentPlane& plane : s.planes) plane = OwnPlane(100);
+  for (SegmentPlane& plane : s.planes) plane = OwnPlane();
   EXPECT_TRUE(s.Run().empty());
 }
 

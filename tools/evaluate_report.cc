@@ -233,6 +233,13 @@ void PrintReport(const EvaluationResult& r, std::ostream& out) {
     }
     out << "(3v = completeness over samples seen by >= " << c.min_views
         << " views, what COLMAP's default fusion can reach)\n";
+    if (r.has_cloud_off_textureless) {
+      const CloudMetrics& off = r.cloud_off_textureless;
+      out << "Accuracy off textureless surfaces (" << off.num_judged
+          << " points on textured surfaces or on none, as in the sky):";
+      for (const CloudThresholdMetrics& m : off.thresholds) out << " " << Percent(m.accuracy);
+      out << " %\n";
+    }
   }
 }
 
@@ -272,7 +279,18 @@ std::string ReportJson(const EvaluationResult& r) {
       << ", \"completeness_multi\": " << m.completeness_multi << ", \"f1\": " << m.f1
       << ", \"f1_multi\": " << m.f1_multi << "}" << (i + 1 < c.thresholds.size() ? ",\n" : "\n");
   }
-  s << "  ]}\n}\n";
+  s << "  ], \"off_textureless\": ";
+  if (r.has_cloud_off_textureless) {
+    const CloudMetrics& off = r.cloud_off_textureless;
+    s << "{\"num_judged\": " << off.num_judged << ", \"accuracy\": [";
+    for (size_t i = 0; i < off.thresholds.size(); ++i) {
+      s << (i > 0 ? ", " : "") << off.thresholds[i].accuracy;
+    }
+    s << "]}";
+  } else {
+    s << "null";
+  }
+  s << "}\n}\n";
   return s.str();
 }
 

@@ -43,6 +43,10 @@ std::vector<MeasuredView> MeasuredViews(const std::string& workspace, const Grou
     }
     MeasuredView view;
     view.depth = ReadDenseMap(info.DepthMapPath(name));
+    if (info.has_textureless) {
+      view.textureless = cv::imread(info.TexturelessPath(name), cv::IMREAD_GRAYSCALE);
+      if (view.textureless.empty()) throw InputError("cannot read " + info.TexturelessPath(name));
+    }
     view.camera = MakeCoreCamera(model.cameras[camera], model.images[image]);
     ResizeCamera(view.depth.width, view.depth.height, &view.camera);
     views.push_back(std::move(view));
@@ -112,12 +116,22 @@ EvaluationResult EvaluateWorkspace(const EvaluationOptions& options) {
         info.extent,
         {std::begin(info.cloud_threshold_fractions), std::end(info.cloud_threshold_fractions)},
         {std::begin(info.absolute_thresholds_m), std::end(info.absolute_thresholds_m)});
-    const std::vector<uint8_t> judged = MeasuredPoints(
-        fused.points, MeasuredViews(options.workspace, info), info.ZeroDepthIsEmpty());
+    const std::vector<MeasuredView> views = MeasuredViews(options.workspace, info);
+    const std::vector<uint8_t> judged =
+        MeasuredPoints(fused.points, views, info.ZeroDepthIsEmpty());
     result.has_cloud = true;
     result.fused = options.fused;
     result.cloud = EvaluateCloud(fused.points, judged, gt.points, gt.num_views,
                                  info.min_views_for_completeness, info.extent, thresholds);
+    if (info.has_textureless) {
+      // The same cloud judged on the points off textureless surfaces only.
+      std::vector<uint8_t> off = OnTexturelessSurface(fused.points, views);
+      for (size_t i = 0; i < off.size(); ++i) off[i] = judged[i] && !off[i];
+      result.has_cloud_off_textureless = true;
+      result.cloud_off_textureless =
+          EvaluateCloud(fused.points, off, gt.points, gt.num_views, info.min_views_for_completeness,
+                        info.extent, thresholds);
+    }
   }
   return result;
 }

@@ -29,6 +29,12 @@ struct EvaluationResult {
   bool has_cloud = false;
   std::string fused;
   CloudMetrics cloud;
+  // The cloud's accuracy over the points that are not on a textureless
+  // surface (OnTexturelessSurface: on textured ones, or on none, as in the
+  // sky); its completeness figures are those of `cloud`. Needs textureless
+  // masks.
+  bool has_cloud_off_textureless = false;
+  CloudMetrics cloud_off_textureless;
 };
 
 // Throws InputError on unreadable ground truth or point clouds. Missing maps

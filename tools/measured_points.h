@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <opencv2/core.hpp>
 #include <vector>
 
 #include "base/dense_map.h"
@@ -23,12 +24,23 @@ namespace eval {
 struct MeasuredView {
   core::Camera camera;  // at the ground truth's size, COLMAP MVS pixel convention
   DenseMap depth;       // ground-truth depth, 0 = no measurement or nothing there
+  cv::Mat textureless;  // CV_8UC1 at the depth's size, non-zero inside; may be empty
 };
 
 // One flag per point: 1 = judged.
 std::vector<uint8_t> MeasuredPoints(const std::vector<Eigen::Vector3f>& points,
                                     const std::vector<MeasuredView>& views,
                                     bool zero_is_empty = false);
+
+// One flag per point: 1 = made for a textureless surface. The point belongs
+// to the view in which it lies nearest the ground-truth surface (relative
+// depth difference at the pixel it projects to, among the views with ground
+// truth there), and is textureless when that view's mask holds the pixel.
+// Points that project onto no ground truth (the sky) and points of textured
+// surfaces are 0: the part of a cloud whose accuracy says whether surfaces
+// appear where the images give no evidence.
+std::vector<uint8_t> OnTexturelessSurface(const std::vector<Eigen::Vector3f>& points,
+                                          const std::vector<MeasuredView>& views);
 
 }  // namespace eval
 }  // namespace msp

@@ -127,7 +127,31 @@ TEST(EvaluateReport, AbsoluteThresholdsInTextAndJson) {
   EXPECT_NE(json.find("\"complete_abs_1\": 0.25,"), std::string::npos);
   EXPECT_NE(json.find("\"accurate_abs_2\": 0.75,"), std::string::npos);
   EXPECT_NE(json.find("\"num_judged\": 8"), std::string::npos);
+  EXPECT_NE(json.find("\"off_textureless\": null"), std::string::npos);
   EXPECT_NE(json.find("\"metres\": 0.05, \"absolute\": true"), std::string::npos);
+}
+
+// The accuracy of the points off textureless surfaces (surfaces made up where
+// the images have no evidence show there), in the text and the JSON.
+TEST(EvaluateReport, AccuracyOffTexturelessSurfaces) {
+  EvaluationResult r = TwoImages();
+  r.has_cloud = true;
+  CloudThresholdMetrics t;
+  t.fraction = 0.005;
+  r.cloud.thresholds = {t};
+  r.has_cloud_off_textureless = true;
+  r.cloud_off_textureless.num_judged = 6;
+  t.accuracy = 0.5;
+  r.cloud_off_textureless.thresholds = {t};
+  std::ostringstream out;
+  PrintReport(r, out);
+  EXPECT_NE(out.str().find("Accuracy off textureless surfaces (6 points on textured surfaces or "
+                           "on none, as in the sky):  50.00 %"),
+            std::string::npos)
+      << out.str();
+  EXPECT_NE(ReportJson(r).find("\"off_textureless\": {\"num_judged\": 6, \"accuracy\": [0.5]}"),
+            std::string::npos)
+      << ReportJson(r);
 }
 
 // Sensor ground truth states its source and rules; without textureless masks

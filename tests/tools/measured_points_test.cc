@@ -48,6 +48,27 @@ TEST(MeasuredPoints, AnyViewWithAMeasurementSuffices) {
   EXPECT_TRUE(MeasuredPoints({}, {View()}).empty());
 }
 
+// A point belongs to the view where it lies nearest the ground truth, and is
+// textureless when that view's mask says so; a point over no ground truth
+// (the sky) is not.
+TEST(OnTexturelessSurface, TheNearestViewsMaskDecides) {
+  MeasuredView left_blank = View();  // columns 0-3 textureless
+  left_blank.textureless = cv::Mat(6, 8, CV_8UC1, cv::Scalar(0));
+  left_blank.textureless.colRange(0, 4).setTo(255);
+  MeasuredView far = View();  // the same camera, its surface at 4 m, all textureless
+  far.depth = DenseMap(8, 6, 1, 4.0f);
+  far.textureless = cv::Mat(6, 8, CV_8UC1, cv::Scalar(255));
+  const std::vector<Eigen::Vector3f> points = {
+      {-0.5f, 0.0f, 2.1f},  // column 3 at 2.1 m: textureless, near the 2 m surface
+      {0.5f, 0.0f, 2.0f},   // column 5: textured
+      {-2.0f, 0.0f, 2.0f},  // column 0: no ground truth in the first view; the far one has
+      {0.5f, 0.0f, 3.9f},   // column 4.5 -> 5 at 3.9 m: nearest the far (textureless) surface
+  };
+  EXPECT_EQ(OnTexturelessSurface(points, {left_blank, far}), (std::vector<uint8_t>{1, 0, 1, 1}));
+  EXPECT_EQ(OnTexturelessSurface(points, {left_blank}), (std::vector<uint8_t>{1, 0, 0, 0}));
+  EXPECT_EQ(OnTexturelessSurface(points, {View()}), (std::vector<uint8_t>{0, 0, 0, 0}));
+}
+
 }  // namespace
 }  // namespace eval
 }  // namespace msp

@@ -7,11 +7,14 @@
 # extent, and the depth maps' share within 1 % on textureless pixels, near a
 # true depth edge and near an edge between alike colours (msp_evaluate).
 #
-#   bench/table3.sh [--rows ID,ID,...] [--drop_unknown] <workspace> [msp_stereo options...]
+#   bench/table3.sh [--rows ID,ID,...] [--seeds S,S,...] [--drop_unknown] <workspace>
+#                   [msp_stereo options...]
 #
 # The options after the workspace go to every row, e.g. a quick look:
 #   bench/table3.sh WS --PatchMatchStereo.max_image_size 320 --MspStereo.num_threads 1
 # --rows runs the named rows only (ids below), in the table's order.
+# --seeds runs every row once per seed (--MspStereo.seed S) and prints the
+# means: the figures of one seed swing by a point or two.
 # --drop_unknown leaves out of each row the options this msp_stereo does not
 # accept, and names them under the table: for a binary built before a part
 # existed, whose rows then run that part as that binary does. Without it an
@@ -25,15 +28,17 @@ source "$(dirname "$0")/lib/run_row.sh"
 source "$(dirname "$0")/lib/table3_rows.sh"
 
 selected=""
+seeds=""
 drop_unknown=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --rows) selected=$2; shift 2 ;;
+    --seeds) seeds=${2//,/ }; shift 2 ;;
     --drop_unknown) drop_unknown=1; shift ;;
     *) break ;;
   esac
 done
-[ $# -gt 0 ] || { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 1; }
+[ $# -gt 0 ] || { sed -n '2,23p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 1; }
 ablation_init "$1"
 shift
 common=("$@")
@@ -82,34 +87,49 @@ fi
 
 echo "msp_stereo options of every row: ${common[*]+${common[*]}}"
 echo
-printf '| row | wall s | CPU-s | CPU x | F1 0.5 %% | comp. 0.5 %% | acc. 0.5 %% | F1 2 %% | comp. 2 %% | acc. 2 %% | textureless within 1 %% | near-edge within 1 %% (valid) | alike-edge within 1 %% (valid) |\n'
-printf '|---|---|---|---|---|---|---|---|---|---|---|---|---|\n'
-first_user=""
+printf '| row | wall s | CPU-s | CPU x | F1 0.5 %% | comp. 0.5 %% | acc. 0.5 %% | F1 2 %% | comp. 2 %% | acc. 2 %% | textureless within 1 %% | near-edge within 1 %% (valid) | alike-edge within 1 %% (valid) | depth where empty %% |\n'
+printf '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n'
+first_runs=""
 n=0
 for plan in "${plans[@]}"; do
   n=$((n + 1))
   plan_fields "$plan"
   echo "row $n/${#plans[@]} ($id): msp_stereo ${common[*]+${common[*]}} ${options[*]+${options[*]}}" >&2
-  run_row ${common[@]+"${common[@]}"} ${options[@]+"${options[@]}"}
-  read -r wall user < "$scratch/time"
-  first_user=${first_user:-$user}
-  /usr/bin/python3 - "$scratch/eval.json" "$label" "$wall" "$user" "$first_user" <<'PY'
+  runs=()
+  for seed in ${seeds:-default}; do
+    seed_option=()
+    [ "$seed" = default ] || seed_option=(--MspStereo.seed "$seed")
+    run_row ${common[@]+"${common[@]}"} ${options[@]+"${options[@]}"} ${seed_option[@]+"${seed_option[@]}"}
+    cp "$scratch/eval.json" "$scratch/eval_$seed.json"
+    runs+=("$scratch/eval_$seed.json" "$(cat "$scratch/time")")
+  done
+  first_runs=${first_runs:-${runs[*]}}
+  /usr/bin/python3 - "$label" "${runs[*]}" "$first_runs" <<'PY'
 import json, sys
-e = json.load(open(sys.argv[1]))
-label, wall, user, first_user = sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), float(sys.argv[5])
-pct = lambda v: "%.2f" % (100.0 * v)
+label = sys.argv[1]
+def load(spec):  # "eval.json wall user eval.json wall user ..."
+    f = spec.split()
+    return [(json.load(open(f[i])), float(f[i + 1]), float(f[i + 2])) for i in range(0, len(f), 3)]
+runs, first = load(sys.argv[2]), load(sys.argv[3])
+mean = lambda values: sum(values) / len(values)
+pct = lambda pick: "%.2f" % (100.0 * mean([pick(e) for e, _, _ in runs]))
 fused = []
-for t in e["fused"]["thresholds"][:2]:  # 0.5 % then 2 % of the extent; the absolute ones follow
-    fused += [pct(t["f1_multi"]), pct(t["completeness_multi"]), pct(t["accuracy"])]
-a = e["average"]
-region = lambda r: "%s (%s)" % (pct(a[r]["complete_1"]), pct(a[r]["valid_fraction"]))
-ratio = user / first_user if first_user > 0 else float("nan")
-print("| " + " | ".join([label, "%.0f" % wall, "%.0f" % user, "%.2f" % ratio] + fused +
-                        [pct(a["textureless"]["complete_1"]), region("near_edge"),
-                         region("alike_edge")]) + " |")
+for k in range(2):  # 0.5 % then 2 % of the extent; the absolute ones follow
+    for key in ("f1_multi", "completeness_multi", "accuracy"):
+        fused.append(pct(lambda e: e["fused"]["thresholds"][k][key]))
+region = lambda r: "%s (%s)" % (pct(lambda e: e["average"][r]["complete_1"]),
+                                pct(lambda e: e["average"][r]["valid_fraction"]))
+empty = lambda e: (e["average"].get("empty") or {}).get("with_depth_fraction", 0.0)
+user = mean([u for _, _, u in runs])
+ratio = user / mean([u for _, _, u in first])
+print("| " + " | ".join([label, "%.0f" % mean([w for _, w, _ in runs]), "%.0f" % user,
+                         "%.2f" % ratio] + fused +
+                        [pct(lambda e: e["average"]["textureless"]["complete_1"]),
+                         region("near_edge"), region("alike_edge"), pct(empty)]) + " |")
 PY
 done
 echo
+[ -z "$seeds" ] || echo "Means over seeds $seeds."
 echo "CPU x = user CPU time over the first row's. Fused figures over the surface seen by >= 3 views;"
 echo "map figures: share of ground-truth pixels within 1 % depth (and with a valid depth), mean over images."
 for note in ${notes[@]+"${notes[@]}"}; do echo "$note"; done

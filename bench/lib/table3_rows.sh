@@ -17,8 +17,9 @@ NO_CLU="--MspStereo.disassemble_clustering false"
 NO_SYN="--MspStereo.synergistic_optimization false"
 
 # id | label | options. From the baseline to `full` each row adds one part to
-# the row above (segment planes, our own step, stay on throughout); the last
-# three take one piece out of the full method's 3D optimization.
+# the row above (segment planes, our own step, stay on throughout); the next
+# three take one piece out of the full method's 3D optimization; `default`
+# is what msp_stereo runs without options (the conventional core).
 rows=(
   "baseline|APD-MVS baseline|$METHOD $NO_PRIOR $NO_EQD $NO_CLU $NO_SYN"
   "prior|+ prior: colour layers, union of their edges|$METHOD $NO_AGR $NO_REF $NO_GEO $NO_EQD $NO_CLU $NO_SYN"
@@ -31,6 +32,7 @@ rows=(
   "novar|MSP-MVS w/o Var. (omega = 0)|$METHOD --MspStereo.variance_weight 0"
   "nocost|MSP-MVS w/o Cst.|$METHOD --MspStereo.profile_cost_term false"
   "mu3|MSP-MVS, mu = 3|$METHOD --MspStereo.disparity_samples 3"
+  "default|default options (conventional core, segment planes, open sky)|"
 )
 
 # plan_fields ROW: sets `id`, `label` and the array `options` from an

@@ -10,10 +10,13 @@
 namespace msp {
 namespace {
 
-// Bright: the sky of a daylight photograph and a blown-out window sit near
-// the top of the range (the bundled scene's sky 0.86-0.9, its walls at most
-// 0.78 of full scale).
+// Sky-coloured: bright and blue, as a daylight sky (the bundled scene's sky:
+// grey 0.89, blue above red by 0.12 of full scale; its walls at most 0.78),
+// or white-out, as an overexposed sky or window. White walls are bright too
+// but not blue under room light (office-rgbd: blue below red by 0.04-0.34).
 constexpr double kMinMeanGrey = 0.8;
+constexpr double kMinBlueOverRed = 0.02;
+constexpr double kMinWhiteOutGrey = 0.95;
 // Untextured: at most this share of the segment's matching windows holds
 // texture (the band along its outline does: the windows straddle the edge).
 constexpr double kMaxTexturedShare = 0.5;
@@ -43,6 +46,7 @@ struct SegmentStats {
   long border = 0;
   long textured = 0;
   double grey = 0.0;
+  double blue_over_red = 0.0;
   long outline = 0;           // pixels of other segments 4-adjacent to it (counted per adjacency)
   long outline_on_plane = 0;  // of those, holding its plane
 };
@@ -114,7 +118,7 @@ void TakeMixedPixels(const core::PassParams& params, const std::vector<int32_t>&
 
 }  // namespace
 
-std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params,
+std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMap& color,
                                    const std::vector<int32_t>& labels,
                                    const std::vector<SegmentPlane>& planes,
                                    const std::vector<float>& texture) {
@@ -129,6 +133,7 @@ std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params,
       segment.border += col == 0 || row == 0 || col + 1 == s.width || row + 1 == s.height;
       segment.textured += texture[i] >= core::kTexturedWindowStd;
       segment.grey += params.ref_image.At(col, row);
+      segment.blue_over_red += color.At(row, col, 2) - color.At(row, col, 0);
     }
   }
   // Bright, untextured and open to the border: then the plane decides.
@@ -136,9 +141,12 @@ std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params,
   bool any = false;
   for (size_t id = 1; id < planes.size(); ++id) {
     const SegmentStats& segment = stats[id];
-    candidate[id] = segment.pixels > 0 && segment.border >= kMinBorderPixels &&
-                    segment.grey >= kMinMeanGrey * segment.pixels &&
-                    segment.textured <= kMaxTexturedShare * segment.pixels;
+    const double n = static_cast<double>(segment.pixels);
+    const bool sky_coloured =
+        (segment.grey >= kMinMeanGrey * n && segment.blue_over_red >= kMinBlueOverRed * n) ||
+        segment.grey >= kMinWhiteOutGrey * n;
+    candidate[id] = segment.pixels > 0 && segment.border >= kMinBorderPixels && sky_coloured &&
+                    segment.textured <= kMaxTexturedShare * n;
     any = any || candidate[id];
   }
   if (!any) return {};

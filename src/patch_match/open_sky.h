@@ -19,11 +19,13 @@
 namespace msp {
 
 // 1 at the pixels of every segment of `labels` (ids 1..K) that touches the
-// image border, whose mean grey in `params.ref_image` is bright, whose pixels
-// are mostly untextured (`texture`: core::WindowTextureStd per pixel), and
-// whose plane (`planes`, FitSegmentPlanes) is not accepted or has fewer than
-// half of its inliers its own; else 0. Empty when no pixel is.
-std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params,
+// image border, is sky-coloured (mean grey of `params.ref_image` and mean
+// colour of `color`, the reference image's RGB planes at the pass's level:
+// bright and blue, or white-out), is mostly untextured (`texture`:
+// core::WindowTextureStd per pixel), and has no plane of its own (`planes`,
+// FitSegmentPlanes: none accepted, or one the pixels around its outline
+// mostly hold); then the mixed pixels of its outline. Empty when no pixel is.
+std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMap& color,
                                    const std::vector<int32_t>& labels,
                                    const std::vector<SegmentPlane>& planes,
                                    const std::vector<float>& texture);

@@ -446,7 +446,8 @@ class CpuRunner {
     rules.confirm = msp_.segment_plane_confirmation;
     rules.open_sky = msp_.open_sky;
     const SegmentPlanesReport r =
-        ApplySegmentPlanes(params, state->segments, threads_, rules, &state->open_sky);
+        ApplySegmentPlanes(params, state->segments, threads_, rules,
+                           &level_->color.at(problem.ref), &state->open_sky);
     const double pixels = params.state.width * params.state.height;
     Logf(kLogDetail,
          "  segment planes: %d of %d segments, %.1f%% of pixels offered, %.1f%% took, %.1f%% "

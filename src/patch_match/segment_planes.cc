@@ -258,7 +258,8 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
     if (!plane.accepted) continue;
     std::vector<PixelPosition> own;
     for (const SupportPoint* s : Inliers(params, focal_baseline, support[id], plane)) {
-      if (!Borrowed(params, focal_baseline, labels, fitted, id, *s)) own.push_back({s->col, s->row});
+      if (!Borrowed(params, focal_baseline, labels, fitted, id, *s))
+        own.push_back({s->col, s->row});
     }
     plane.num_own = static_cast<int>(own.size());
     plane.accepted = plane.num_own >= kMinInliers && Spans(own, spread[id]);
@@ -324,7 +325,7 @@ void ConfirmSegmentPlanes(const core::PassParams& params, const std::vector<int3
 
 SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
                                        const std::vector<int32_t>& labels, int num_threads,
-                                       const SegmentPlaneRules& rules,
+                                       const SegmentPlaneRules& rules, const DenseMap* color,
                                        std::vector<uint8_t>* open_sky) {
   const core::PixelStateView& s = params.state;
   const int n = s.width * s.height;
@@ -348,7 +349,8 @@ SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
   if (rules.confirm) ConfirmSegmentPlanes(params, labels, num_threads, &planes);
   SegmentPlanesReport report;
   std::vector<uint8_t> sky;
-  if (rules.open_sky) sky = OpenSkyPixels(params, labels, planes, texture);
+  if (rules.open_sky && color != nullptr)
+    sky = OpenSkyPixels(params, *color, labels, planes, texture);
   report.num_open_sky = static_cast<int>(std::count(sky.begin(), sky.end(), 1));
   if (open_sky != nullptr) *open_sky = std::move(sky);
   report.num_segments = static_cast<int>(planes.size()) - 1;

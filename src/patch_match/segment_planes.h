@@ -79,9 +79,12 @@ void ConfirmSegmentPlanes(const core::PassParams& params, const std::vector<int3
 // `labels` (SegmentPlaneLabels) under `rules`, offers them, and writes the
 // open-sky pixels to `open_sky` (when given; empty when there are none), which
 // the pass's maps leave empty.
+// `color`: the reference image's RGB planes at the pass's level, which the
+// open-sky rule needs (null: the rule does not run).
 SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
                                        const std::vector<int32_t>& labels, int num_threads,
                                        const SegmentPlaneRules& rules = SegmentPlaneRules(),
+                                       const DenseMap* color = nullptr,
                                        std::vector<uint8_t>* open_sky = nullptr);
 
 }  // namespace msp

@@ -41,10 +41,13 @@ struct Strips {
   std::vector<float> normal = std::vector<float>(3 * kWidth * kHeight, 0.0f);
   std::vector<float> cost = std::vector<float>(kWidth * kHeight, 0.0f);
   std::vector<uint32_t> mask = std::vector<uint32_t>(kWidth * kHeight, 0u);
+  // RGB planes: a pale blue sky colour everywhere.
+  DenseMap color = DenseMap(kWidth, kHeight, 3);
   core::PassParams params;
 
   Strips() {
     for (int i = 0; i < kWidth * kHeight; ++i) normal[2 * kWidth * kHeight + i] = -1.0f;
+    SetColor(0, 0.85f, 0.9f, 0.95f);
     for (int row = 0; row < kHeight; ++row) {
       for (int col = 0; col < kWidth; ++col) labels[row * kWidth + col] = 1 + col / kStrip;
     }
@@ -56,12 +59,23 @@ struct Strips {
       if (labels[i] == id) (*field)[i] = value;
     }
   }
+  // Segment `id`'s pixels (every pixel for 0) in colour (r, g, b).
+  void SetColor(int id, float r, float g, float b) {
+    for (int row = 0; row < kHeight; ++row) {
+      for (int col = 0; col < kWidth; ++col) {
+        if (id != 0 && labels[row * kWidth + col] != id) continue;
+        color.At(row, col, 0) = r;
+        color.At(row, col, 1) = g;
+        color.At(row, col, 2) = b;
+      }
+    }
+  }
   std::vector<uint8_t> Run() {
     params.state = core::PixelStateView{depth.data(), normal.data(), cost.data(),
                                         mask.data(),  kWidth,        kHeight};
     params.ref_camera = test::CentredCamera(kWidth, kHeight);
     params.ref_image = core::ImageView{grey.data(), kWidth, kHeight, kWidth};
-    return OpenSkyPixels(params, labels, planes, texture);
+    return OpenSkyPixels(params, color, labels, planes, texture);
   }
   bool Marked(const std::vector<uint8_t>& sky, int id) const {
     for (size_t i = 0; i < labels.size(); ++i) {
@@ -133,6 +147,17 @@ TEST(OpenSky, TakesTheMixedPixelsOfItsOutline) {
   EXPECT_EQ(sky[row * Strips::kWidth + first + 1], 1);
   EXPECT_EQ(sky[row * Strips::kWidth + first + 2], 0);  // three deep
   EXPECT_EQ(sky[(row + 1) * Strips::kWidth + first], 0);
+}
+
+// A bright white wall under room light is warm, not blue: not sky, unless it
+// is white-out.
+TEST(OpenSky, BrightButNotBlueIsNotSkyUnlessWhiteOut) {
+  Strips s;
+  for (int id = 2; id <= 5; ++id) s.planes[id] = OwnPlane();
+  s.SetColor(1, 0.95f, 0.9f, 0.85f);
+  EXPECT_TRUE(s.Run().empty());
+  s.Set(1, &s.grey, 0.96f);
+  EXPECT_TRUE(s.Marked(s.Run(), 1));
 }
 
 TEST(OpenSky, NothingMarkedGivesAnEmptyMask) {

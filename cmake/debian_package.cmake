@@ -3,7 +3,8 @@
 # /usr/lib/msp-stereo (bin/ holds msp_stereo, the tools and the `colmap`
 # dispatcher), never in /usr/bin, so Debian's own colmap is not shadowed; a
 # user puts /usr/lib/msp-stereo/bin first on PATH to get `colmap msp_stereo`.
-# `cmake --install` keeps its usual <prefix>/bin.
+# `cmake --install` keeps its usual <prefix>/bin. The Python module, when
+# built, goes where python3 finds it: /usr/lib/python3/dist-packages.
 set(CPACK_PACKAGE_NAME msp-stereo)
 set(CPACK_PACKAGE_CONTACT "msp-stereo maintainers <msp-stereo@localhost>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
@@ -16,4 +17,19 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 # dispatcher needs the real COLMAP, which no binary links.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "colmap")
+# The Python module (python/CMakeLists.txt) goes to Debian's python3 folder,
+# /usr/lib/python3/dist-packages (its component python_deb), not under the
+# prefix (component python, for `cmake --install`). The components are
+# packed into the one package. The module needs its python3, and numpy for
+# read_array: recommended, since the programs need neither.
+set(CPACK_DEB_COMPONENT_INSTALL ON)
+set(CPACK_COMPONENTS_GROUPING ALL_COMPONENTS_IN_ONE)
+set(CPACK_COMPONENTS_ALL Unspecified)
+if(MSP_PYTHON_FOUND)
+  list(APPEND CPACK_COMPONENTS_ALL python_deb)
+  # The module is built for one python3 (its ABI tag names it, e.g. cpython-311).
+  math(EXPR MSP_PYTHON_NEXT_MINOR "${Python3_VERSION_MINOR} + 1")
+  set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
+      "python3 (>= ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}), python3 (<< ${Python3_VERSION_MAJOR}.${MSP_PYTHON_NEXT_MINOR}), python3-numpy")
+endif()
 include(CPack)

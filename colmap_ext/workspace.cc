@@ -4,12 +4,13 @@
 
 #include <algorithm>
 #include <cctype>
-#include <iostream>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 #include "base/cache_budget.h"
+#include "base/log.h"
 #include "base/stop_request.h"
 #include "colmap_ext/camera_conversion.h"
 #include "colmap_ext/errors.h"
@@ -29,8 +30,6 @@ std::string ToLower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
 }
-
-void Warn(const std::string& message) { std::cerr << "WARNING: " << message << std::endl; }
 
 void RequireFolder(const std::string& path, const std::string& what) {
   if (!IsDirectory(path)) {
@@ -120,7 +119,8 @@ std::vector<Problem> ResolveProblems(const std::vector<PatchMatchConfigEntry>& e
         break;
     }
     if (problem.srcs.empty()) {
-      Warn("Ignoring reference image " + entry.ref_name + ", because it has no source images.");
+      LogWarning("Ignoring reference image " + entry.ref_name +
+                 ", because it has no source images.");
       continue;
     }
     problems.push_back(std::move(problem));
@@ -144,22 +144,22 @@ std::vector<Problem> HandleMissingImages(std::vector<Problem> problems, const Wo
                          MSP_OPTION_FLAG_OF(PatchMatchStereoOptions, allow_missing_files) +
                          " 1 skips missing images)");
       }
-      if (missing[view]) Warn("image file " + path + " does not exist; ignoring it");
+      if (missing[view]) LogWarning("image file " + path + " does not exist; ignoring it");
     }
     return missing[view] == 1;
   };
   std::vector<Problem> kept;
   for (Problem& problem : problems) {
     if (is_missing(problem.ref)) {
-      Warn("Ignoring reference image " + ws.views[problem.ref].name +
-           ", because its image file is missing.");
+      LogWarning("Ignoring reference image " + ws.views[problem.ref].name +
+                 ", because its image file is missing.");
       continue;
     }
     problem.srcs.erase(std::remove_if(problem.srcs.begin(), problem.srcs.end(), is_missing),
                        problem.srcs.end());
     if (problem.srcs.empty()) {
-      Warn("Ignoring reference image " + ws.views[problem.ref].name +
-           ", because none of its source images exists.");
+      LogWarning("Ignoring reference image " + ws.views[problem.ref].name +
+                 ", because none of its source images exists.");
       continue;
     }
     kept.push_back(std::move(problem));
@@ -278,9 +278,12 @@ void LoadPriorMaskLayers(const StereoCommandOptions& options, Workspace* ws) {
     mask.work_height = ws->views[ref].camera.height;
     images.push_back(mask);
   }
+  // The loader's lines go to the log once it is done (a few lines in all).
+  std::ostringstream mask_log;
   std::vector<ImageLabelLayers> layers =
       LoadMaskLayers(ResolveMaskPath(options.msp.mask_path, ws->path), images,
-                     options.msp.num_mask_levels, &std::cout);
+                     options.msp.num_mask_levels, &mask_log);
+  LogText(kLogAlways, mask_log.str());
   for (size_t i = 0; i < refs.size(); ++i) ws->views[refs[i]].mask_layers = std::move(layers[i]);
 }
 

@@ -1,13 +1,13 @@
 // RunPatchMatchCuda: the CPU back-end's pass schedule with the GPU's sweeps.
 #include "backend/cuda_entry.h"
 
-#include <cstdio>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "backend/gpu_index.h"
+#include "base/log.h"
 #include "cuda/cuda_sweep_engine.h"
 #include "patch_match/patch_match_cpu.h"
 
@@ -27,12 +27,12 @@ void RunPatchMatchCuda(const std::vector<View>& views, const std::vector<Problem
       device_of_image[static_cast<uint32_t>(problems[n].ref)] = workers[w].index;
     }
   }
-  std::printf(
-      "CUDA back-end: random initialisation, scoring, red-black sweeps, the local refinement and "
-      "the deformable step's classification, anchor searches and sweeps run on the GPU; the "
-      "nearest reliable pixels, the median filter, segment planes, the segmentation prior, "
-      "upsampling and the output filter run on the CPU with %s threads\n",
-      msp.num_threads > 0 ? std::to_string(msp.num_threads).c_str() : "all");
+  Logf(kLogAlways,
+       "CUDA back-end: random initialisation, scoring, red-black sweeps, the local refinement and "
+       "the deformable step's classification, anchor searches and sweeps run on the GPU; the "
+       "nearest reliable pixels, the median filter, segment planes, the segmentation prior, "
+       "upsampling and the output filter run on the CPU with %s threads\n",
+       msp.num_threads > 0 ? std::to_string(msp.num_threads).c_str() : "all");
   cuda::CudaSweepEngine engine(std::move(device_of_image), workers.front().index);
   RunPatchMatch(views, problems, patch_match, msp, scratch_dir, sink, engine, shared);
 }

@@ -3,9 +3,9 @@
 #include <cuda_runtime.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <utility>
 
+#include "base/log.h"
 #include "cuda/cuda_check.h"
 #include "cuda/deformable_kernels.h"
 #include "cuda/device_buffer.h"
@@ -99,8 +99,8 @@ std::vector<uint8_t> CudaSweepEngine::Classify(const core::PassParams& params,
 
 void CudaSweepEngine::Finish() {
   for (int device : used_devices_) {
-    std::printf("GPU %d: peak device memory of the run's buffers %.1f MiB\n", device,
-                DeviceMemoryMeter::Peak(device) / kBytesPerMebibyte);
+    Logf(kLogAlways, "GPU %d: peak device memory of the run's buffers %.1f MiB\n", device,
+         DeviceMemoryMeter::Peak(device) / kBytesPerMebibyte);
   }
 }
 

@@ -38,9 +38,22 @@ std::string ShellWord(const std::string& text) {
 // Collects option definitions into a boost description (used for the command
 // line, the ini file and the usage text alike) and remembers how to print each
 // field's value.
-class OptionTable {
+class OptionTable : public OptionVisitor {
  public:
   explicit OptionTable(po::options_description* description) : description_(description) {}
+
+  void Visit(const std::string& name, int* field, const std::string& help) override {
+    Add(name, field, help);
+  }
+  void Visit(const std::string& name, double* field, const std::string& help) override {
+    Add(name, field, help);
+  }
+  void Visit(const std::string& name, bool* field, const std::string& help) override {
+    Add(name, field, help);
+  }
+  void Visit(const std::string& name, std::string* field, const std::string& help) override {
+    Add(name, field, help);
+  }
 
   template <typename T>
   void Add(const std::string& name, T* field, const std::string& help) {
@@ -75,7 +88,7 @@ class OptionTable {
 // Registers `options.field` under the name its field gives it (option_name.h),
 // so no option name is typed here.
 #define MSP_ADD_OPTION(table, options, field, help) \
-  (table)->Add(MSP_OPTION_NAME(options, field), &(options).field, help)
+  (table)->Visit(MSP_OPTION_NAME(options, field), &(options).field, help)
 #define MSP_ADD_OPTION_NO_DEFAULT(table, options, field, help) \
   (table)->AddNoDefault(MSP_OPTION_NAME(options, field), &(options).field, help)
 
@@ -107,7 +120,7 @@ void DefineTopLevelOptions(StereoCommandOptions* o, OptionTable* t) {
                  "per-image lines either (the start, warnings, errors and the final summary).");
 }
 
-void DefinePatchMatchStereoOptions(PatchMatchStereoOptions* p, OptionTable* t) {
+void DefinePatchMatchStereoOptions(PatchMatchStereoOptions* p, OptionVisitor* t) {
   const std::string bilateral_ncc = MSP_OPTION_FLAG_OF(MspStereoOptions, bilateral_ncc);
   MSP_ADD_OPTION(t, *p, max_image_size,
                  "Maximum image size in either dimension; larger images, their intrinsics and the "
@@ -182,7 +195,7 @@ void DefinePatchMatchStereoOptions(PatchMatchStereoOptions* p, OptionTable* t) {
                      MSP_OPTION_FLAG_OF(MspStereoOptions, num_threads) + ").");
 }
 
-void DefineMspStereoOptions(MspStereoOptions* m, OptionTable* t) {
+void DefineMspStereoOptions(MspStereoOptions* m, OptionVisitor* t) {
   MSP_ADD_OPTION(t, *m, backend,
                  "{auto, cpu, cuda}. auto: cuda when this build has the CUDA back-end and a CUDA "
                  "device is present, else cpu (the log says which). cuda without either is an "
@@ -449,6 +462,14 @@ ParseStatus ParseStereoCommand(int argc, const char* const argv[], StereoCommand
   }
   options->workspace_format = ToUpper(options->workspace_format);
   return ParseStatus::kRun;
+}
+
+void VisitPatchMatchStereoOptions(PatchMatchStereoOptions* options, OptionVisitor* visitor) {
+  DefinePatchMatchStereoOptions(options, visitor);
+}
+
+void VisitMspStereoOptions(MspStereoOptions* options, OptionVisitor* visitor) {
+  DefineMspStereoOptions(options, visitor);
 }
 
 std::string StereoCommandUsage() {

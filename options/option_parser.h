@@ -42,6 +42,23 @@ enum class ParseStatus {
 // case-insensitively).
 ParseStatus ParseStereoCommand(int argc, const char* const argv[], StereoCommandOptions* options);
 
+// Receives the options of a struct one field at a time: the option's full
+// name (MSP_OPTION_NAME, e.g. "PatchMatchStereo.window_radius"), the field and
+// its help text. The parser's table is one; the Python module's attributes
+// are another, so every option is listed once.
+class OptionVisitor {
+ public:
+  virtual ~OptionVisitor() = default;
+  virtual void Visit(const std::string& name, int* field, const std::string& help) = 0;
+  virtual void Visit(const std::string& name, double* field, const std::string& help) = 0;
+  virtual void Visit(const std::string& name, bool* field, const std::string& help) = 0;
+  virtual void Visit(const std::string& name, std::string* field, const std::string& help) = 0;
+};
+
+// Every field of the struct with an option, in usage order.
+void VisitPatchMatchStereoOptions(PatchMatchStereoOptions* options, OptionVisitor* visitor);
+void VisitMspStereoOptions(MspStereoOptions* options, OptionVisitor* visitor);
+
 // Usage text listing every option with its default and help text.
 std::string StereoCommandUsage();
 

@@ -20,7 +20,7 @@ TARGETS=(sparse_model_binary_fuzzer sparse_model_text_fuzzer dense_map_fuzzer
 
 mkdir -p "$BUILD"
 CC=clang CXX=clang++ cmake -S . -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCUDA_ENABLED=OFF -DMSP_BUILD_TESTS=OFF -DMSP_FUZZ=ON > "$BUILD/configure.log" 2>&1 ||
+  -DCUDA_ENABLED=OFF -DMSP_PYTHON=OFF -DMSP_BUILD_TESTS=OFF -DMSP_FUZZ=ON > "$BUILD/configure.log" 2>&1 ||
   { cat "$BUILD/configure.log"; exit 1; }
 cmake --build "$BUILD" --target msp_fuzzers
 

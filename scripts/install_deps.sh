@@ -12,7 +12,8 @@ PACKAGES=(
   clang libclang-rt-14-dev                       # libFuzzer targets of the readers (scripts/fuzz.sh)
   dpkg-dev                                       # cpack -G DEB: dpkg-shlibdeps finds the runtime libraries
   colmap                                         # stereo_fusion for demos and tests (no CUDA needed)
-  python3-numpy python3-opencv                   # bench/ply_stats.py
+  python3-numpy python3-opencv                   # bench/ply_stats.py, the Python module's tests
+  pybind11-dev python3-dev                       # the Python module (python/)
   time                                           # peak memory of a run (integration/memory, bench/)
 )
 

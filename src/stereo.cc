@@ -1,11 +1,11 @@
 #include "stereo.h"
 
-#include <cstdio>
 #include <stdexcept>
 
 #include "backend/backend_choice.h"
 #include "backend/cuda_entry.h"
 #include "backend/device_memory.h"
+#include "base/log.h"
 #include "patch_match/patch_match_cpu.h"
 
 namespace msp {
@@ -27,7 +27,7 @@ void RunStereo(const std::vector<View>& views, const std::vector<Problem>& probl
                const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
                const std::string& scratch_dir, MapSink& sink, const SharedRun* shared) {
   const BackendChoice choice = ResolveBackend(patch_match, msp);
-  std::printf("%s\n", DescribeChoice(choice).c_str());
+  LogText(kLogAlways, DescribeChoice(choice) + "\n");
   if (choice.backend == "cpu") {
     RunPatchMatchCpu(views, problems, patch_match, msp, scratch_dir, sink, shared);
     return;
@@ -35,9 +35,8 @@ void RunStereo(const std::vector<View>& views, const std::vector<Problem>& probl
   // Before anything runs: an image that cannot fit stops here, not in a kernel.
   for (const std::string& line :
        CheckDeviceMemory(views, problems, choice.workers, patch_match.geom_consistency)) {
-    std::printf("%s\n", line.c_str());
+    LogText(kLogAlways, line + "\n");
   }
-  std::fflush(stdout);
   RunPatchMatchCuda(views, problems, patch_match, msp, scratch_dir, sink, choice.workers, shared);
 }
 

@@ -2,8 +2,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace msp {
+namespace {
+
+ProgressListener progress_listener;  // empty = none
+
+}  // namespace
 
 double EstimateSecondsLeft(double done_weight, double total_weight, double elapsed_seconds) {
   if (done_weight <= 0) return -1;
@@ -42,6 +48,19 @@ std::string ProgressMeter::Line(double elapsed_seconds) const {
       done_items_, total_items_, share, FormatDuration(elapsed_seconds).c_str(),
       FormatDuration(EstimateSecondsLeft(done_weight_, total_weight_, elapsed_seconds)).c_str());
   return text;
+}
+
+void SetProgressListener(ProgressListener listener) { progress_listener = std::move(listener); }
+
+void ReportProgress(const ProgressMeter& meter, double elapsed_seconds) {
+  if (!progress_listener) return;
+  ProgressUpdate update;
+  update.done = meter.done_items();
+  update.total = meter.total_items();
+  update.elapsed_seconds = elapsed_seconds;
+  update.seconds_left =
+      EstimateSecondsLeft(meter.done_weight(), meter.total_weight(), elapsed_seconds);
+  progress_listener(update);
 }
 
 }  // namespace msp

@@ -5,6 +5,7 @@
 // the rate is elapsed seconds per unit of weight done so far.
 #pragma once
 
+#include <functional>
 #include <string>
 
 namespace msp {
@@ -37,5 +38,26 @@ class ProgressMeter {
   int done_items_ = 0;
   double done_weight_ = 0;
 };
+
+// What a run tells an observer after each image-pass (the Python module's
+// progress callback): image-passes done of all, seconds since the first and
+// the estimated seconds left (negative when unknown).
+struct ProgressUpdate {
+  int done = 0;
+  int total = 0;
+  double elapsed_seconds = 0;
+  double seconds_left = -1;
+};
+using ProgressListener = std::function<void(const ProgressUpdate&)>;
+
+// Replaces the listener; an empty one removes it. Set it while no run is
+// under way, as the log sink.
+void SetProgressListener(ProgressListener listener);
+
+// Hands `meter`'s totals to the listener, if any, on the calling thread: the
+// thread that runs the schedule, between two image-passes, where the run can
+// unwind as from a stop request (stop_request.h). A listener may end the run
+// there by throwing, e.g. StopRequested.
+void ReportProgress(const ProgressMeter& meter, double elapsed_seconds);
 
 }  // namespace msp

@@ -20,6 +20,9 @@ StopRequested::StopRequested(int signal_number)
     : std::runtime_error("stopped by " + SignalName(signal_number)),
       signal_number_(signal_number) {}
 
+StopRequested::StopRequested(int signal_number, const std::string& message)
+    : std::runtime_error(message), signal_number_(signal_number) {}
+
 void InstallStopHandlers() {
   main_thread = std::this_thread::get_id();
   struct sigaction action {};
@@ -31,6 +34,18 @@ void InstallStopHandlers() {
   sigaction(SIGTERM, &action, nullptr);
   signal(SIGXFSZ, SIG_IGN);
 }
+
+ScopedStopHandler::ScopedStopHandler() {
+  main_thread = std::this_thread::get_id();
+  pending_signal.store(0);
+  struct sigaction action {};
+  action.sa_handler = OnStopSignal;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  sigaction(SIGINT, &action, &previous_);
+}
+
+ScopedStopHandler::~ScopedStopHandler() { sigaction(SIGINT, &previous_, nullptr); }
 
 int PendingStopSignal() { return pending_signal.load(); }
 

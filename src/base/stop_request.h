@@ -5,6 +5,8 @@
 // (the handler is reset after the first).
 #pragma once
 
+#include <signal.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -12,7 +14,9 @@ namespace msp {
 
 class StopRequested : public std::runtime_error {
  public:
+  // what() is "stopped by <signal>", or `message` (how far the run got).
   explicit StopRequested(int signal_number);
+  StopRequested(int signal_number, const std::string& message);
   int signal_number() const { return signal_number_; }
 
  private:
@@ -23,6 +27,23 @@ class StopRequested : public std::runtime_error {
 // write beyond the file size limit (ulimit -f) fails with EFBIG and a message
 // naming the file instead of killing the process.
 void InstallStopHandlers();
+
+// For a host process with a SIGINT handler of its own (the Python module,
+// whose interpreter turns SIGINT into KeyboardInterrupt): while the object
+// lives, SIGINT asks the calling thread to stop as InstallStopHandlers's
+// handler does; then the host's handler is back. A second SIGINT is the same
+// request, never a kill: the process is the host's. Clears a stop request
+// left by an earlier run on entry.
+class ScopedStopHandler {
+ public:
+  ScopedStopHandler();
+  ~ScopedStopHandler();
+  ScopedStopHandler(const ScopedStopHandler&) = delete;
+  ScopedStopHandler& operator=(const ScopedStopHandler&) = delete;
+
+ private:
+  struct sigaction previous_;  // the host's SIGINT action
+};
 
 // The signal that asked to stop, 0 when none.
 int PendingStopSignal();

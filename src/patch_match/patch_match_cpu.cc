@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <memory>
 #include <set>
@@ -101,14 +100,14 @@ class CpuRunner {
 
   void Run() {
     if (shared_ != nullptr && shared_->Owned().empty()) {
-      std::printf("%s: none of the %zu problems is this process's; nothing to do.\n",
-                  shared_->Name().c_str(), problems_.size());
+      Logf(kLogAlways, "%s: none of the %zu problems is this process's; nothing to do.\n",
+           shared_->Name().c_str(), problems_.size());
       return;
     }
     run_ = shared_ != nullptr ? SharedProblemsToRun() : ProblemsToRun(problems_, sink_);
     if (run_.empty()) {
-      std::printf("All %zu reference images already have their outputs; nothing to do.\n",
-                  problems_.size());
+      Logf(kLogAlways, "All %zu reference images already have their outputs; nothing to do.\n",
+           problems_.size());
       if (shared_ != nullptr) ClearSharedStates();
       return;
     }
@@ -121,8 +120,8 @@ class CpuRunner {
       }
     }
     const std::vector<Pass> schedule = BuildPassSchedule(pm_, msp_, max_w, max_h);
-    std::printf("%s back-end: %zu problems, %d round(s), %d thread(s)\n", engine_.Name(),
-                run_.size(), schedule.front().num_rounds, threads_);
+    Logf(kLogAlways, "%s back-end: %zu problems, %d round(s), %d thread(s)\n", engine_.Name(),
+         run_.size(), schedule.front().num_rounds, threads_);
     for (const Pass& pass : schedule) Logf(kLogDetail, "  %s\n", ToString(pass).c_str());
     const size_t first = shared_ != nullptr ? ResumeShared(schedule) : 0;
     const std::vector<Pass> remaining(schedule.begin() + first, schedule.end());
@@ -145,9 +144,8 @@ class CpuRunner {
            prior_->NumCalls(), prior_->TotalSeconds(),
            100.0 * prior_->TotalSeconds() / std::max(Elapsed(), 1e-9), Elapsed());
     }
-    std::printf("%s", FormatRunSummary(pass_times, ImageOutcomes()).c_str());
-    Logf(kLogDetail, "%s", ledger_.Format().c_str());
-    std::fflush(stdout);
+    LogText(kLogAlways, FormatRunSummary(pass_times, ImageOutcomes()));
+    LogText(kLogDetail, ledger_.Format());
   }
 
  private:
@@ -218,10 +216,10 @@ class CpuRunner {
       cache_.Put(problems_[k].ref, shared_->Load(last, problems_[k].ref));
       cache_.EnforceBudget(problems_[k].ref);
     }
-    std::printf(
-        "%s: resuming after %s (pass %d of %zu), whose states of its %zu images were saved\n",
-        shared_->Name().c_str(), PassLabel(schedule[last]).c_str(), last + 1, schedule.size(),
-        run_.size());
+    Logf(kLogAlways,
+         "%s: resuming after %s (pass %d of %zu), whose states of its %zu images were saved\n",
+         shared_->Name().c_str(), PassLabel(schedule[last]).c_str(), last + 1, schedule.size(),
+         run_.size());
     return static_cast<size_t>(last) + 1;
   }
 
@@ -233,8 +231,9 @@ class CpuRunner {
 
   void ClearSharedStates() {
     if (shared_->ClearWhenComplete([this](int view) { return sink_.HasFinalOutput(view); })) {
-      std::printf("%s: every reference image has its final maps; the shared states are removed\n",
-                  shared_->Name().c_str());
+      Logf(kLogAlways,
+           "%s: every reference image has its final maps; the shared states are removed\n",
+           shared_->Name().c_str());
     }
   }
 
@@ -406,6 +405,7 @@ class CpuRunner {
          pass.kind == PassKind::kGeometric ? "geometric" : "photometric", pass.index + 1, n + 1,
          run_.size(), views_[problem.ref].name.c_str(), params.state.width, params.state.height,
          SecondsSince(t0), refine_seconds, progress_->Line(Elapsed()).c_str());
+    ReportProgress(*progress_, Elapsed());
   }
 
   // Runs one step of an image-pass into the cost model; returns its seconds.

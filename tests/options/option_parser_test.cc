@@ -468,5 +468,50 @@ TEST(OptionParser, PrintedValuesRoundTripThroughTheParser) {
   EXPECT_EQ(second.msp.seed, 9);  // from --random_seed, and printed as --MspStereo.seed
 }
 
+// The names a visitor hears, and each field's address.
+class NameCollector : public OptionVisitor {
+ public:
+  void Visit(const std::string& name, int* field, const std::string& help) override {
+    Add(name, field, help);
+  }
+  void Visit(const std::string& name, double* field, const std::string& help) override {
+    Add(name, field, help);
+  }
+  void Visit(const std::string& name, bool* field, const std::string& help) override {
+    Add(name, field, help);
+  }
+  void Visit(const std::string& name, std::string* field, const std::string& help) override {
+    Add(name, field, help);
+  }
+  std::vector<std::string> names;
+  std::vector<const void*> fields;
+
+ private:
+  void Add(const std::string& name, const void* field, const std::string& help) {
+    EXPECT_FALSE(help.empty()) << name;
+    names.push_back(name);
+    fields.push_back(field);
+  }
+};
+
+TEST(OptionParser, VisitorsHearTheParsersOptionsOfEachStruct) {
+  StereoCommandOptions options;
+  NameCollector visitor;
+  VisitPatchMatchStereoOptions(&options.patch_match, &visitor);
+  VisitMspStereoOptions(&options.msp, &visitor);
+  std::vector<std::string> sections;
+  for (const std::string& name : StereoCommandOptionNames()) {
+    if (name.find('.') != std::string::npos) sections.push_back(name);
+  }
+  EXPECT_EQ(visitor.names, sections);
+  // The fields are the struct's own, so a visitor can read and write them.
+  const char* begin = reinterpret_cast<const char*>(&options);
+  for (const void* field : visitor.fields) {
+    EXPECT_GE(static_cast<const char*>(field), begin);
+    EXPECT_LT(static_cast<const char*>(field), begin + sizeof(options));
+  }
+  EXPECT_EQ(visitor.fields.front(), &options.patch_match.max_image_size);
+}
+
 }  // namespace
 }  // namespace msp

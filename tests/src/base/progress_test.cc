@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+#include <vector>
+
 namespace msp {
 namespace {
 
@@ -46,6 +49,32 @@ TEST(FormatDurationTest, SecondsMinutesHours) {
   EXPECT_EQ(FormatDuration(3599), "59m59s");
   EXPECT_EQ(FormatDuration(3600 * 2 + 60 * 5 + 10), "2h05m");
   EXPECT_EQ(FormatDuration(-1), "?");
+}
+
+TEST(ProgressListenerTest, HearsTheTotalsOfEachReport) {
+  std::vector<ProgressUpdate> updates;
+  SetProgressListener([&](const ProgressUpdate& update) { updates.push_back(update); });
+  ProgressMeter meter(4, 4);
+  ReportProgress(meter, 0);  // nothing done: no rate, no estimate
+  meter.Add(1);
+  ReportProgress(meter, 3);
+  SetProgressListener(nullptr);
+  meter.Add(1);
+  ReportProgress(meter, 6);  // no listener: nobody hears it
+  ASSERT_EQ(updates.size(), 2u);
+  EXPECT_EQ(updates[0].done, 0);
+  EXPECT_LT(updates[0].seconds_left, 0);
+  EXPECT_EQ(updates[1].done, 1);
+  EXPECT_EQ(updates[1].total, 4);
+  EXPECT_DOUBLE_EQ(updates[1].elapsed_seconds, 3);
+  EXPECT_DOUBLE_EQ(updates[1].seconds_left, 9);
+}
+
+TEST(ProgressListenerTest, AListenerMayEndTheRunByThrowing) {
+  SetProgressListener([](const ProgressUpdate&) { throw std::runtime_error("stop here"); });
+  ProgressMeter meter(1, 1);
+  EXPECT_THROW(ReportProgress(meter, 1), std::runtime_error);
+  SetProgressListener(nullptr);
 }
 
 }  // namespace

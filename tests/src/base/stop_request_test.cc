@@ -60,6 +60,34 @@ TEST_F(StopRequestTest, TheHandlerTurnsASignalIntoARequest) {
   signal(SIGTERM, SIG_DFL);
 }
 
+std::atomic<int> host_handler_calls{0};
+extern "C" void HostHandler(int) { ++host_handler_calls; }
+
+TEST_F(StopRequestTest, AScopedHandlerLendsSigintAndGivesItBack) {
+  signal(SIGINT, HostHandler);
+  RequestStop(SIGTERM);  // left by an earlier run
+  {
+    ScopedStopHandler handler;
+    EXPECT_EQ(PendingStopSignal(), 0);
+    ASSERT_EQ(::raise(SIGINT), 0);
+    EXPECT_EQ(PendingStopSignal(), SIGINT);
+    ASSERT_EQ(::raise(SIGINT), 0);  // a second one is the same request, not a kill
+    EXPECT_THROW(ThrowIfStopRequested(), StopRequested);
+    EXPECT_EQ(host_handler_calls, 0);
+  }
+  ClearStopRequest();
+  ASSERT_EQ(::raise(SIGINT), 0);
+  EXPECT_EQ(host_handler_calls, 1);
+  EXPECT_EQ(PendingStopSignal(), 0);
+  signal(SIGINT, SIG_DFL);
+}
+
+TEST(StopRequestedTest, CarriesAMessageOfItsOwn) {
+  const StopRequested stop(SIGINT, "Stopped by SIGINT before any map was computed");
+  EXPECT_EQ(stop.signal_number(), SIGINT);
+  EXPECT_STREQ(stop.what(), "Stopped by SIGINT before any map was computed");
+}
+
 TEST(LogTest, ALineShowsUpToTheLogLevel) {
   SetLogLevel(1);
   EXPECT_TRUE(LogEnabled(kLogProgress));

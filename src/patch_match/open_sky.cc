@@ -1,6 +1,5 @@
 #include "patch_match/open_sky.h"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -31,7 +30,6 @@ constexpr int kMinBorderPixels = 3;
 // outline holds the segment's plane when its normal is within 10 degrees and
 // its depth within 2 % of the plane's there; more than this share of them
 // do: the segment is a hole in that surface, not a surface.
-constexpr float kSamePlaneCos = 0.985f;
 constexpr float kSameDepth = 0.02f;
 constexpr double kMaxSurroundedShare = 0.5;
 
@@ -51,7 +49,7 @@ struct SegmentStats {
   long outline_on_plane = 0;  // of those, holding its plane
 };
 
-// Whether pixel j (at col, row) holds `plane`: see kSamePlaneCos, kSameDepth.
+// Whether the pixel at (col, row) holds `plane`: see kSamePlaneCos, kSameDepth.
 bool HoldsPlane(const core::PassParams& params, int col, int row, const SegmentPlane& plane) {
   const core::PixelStateView& s = params.state;
   const int j = s.Index(col, row);

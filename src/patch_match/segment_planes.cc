@@ -45,9 +45,6 @@ constexpr float kMinInlierShare = 0.5f;
 // axis of their pixel positions at least this share of the segment's. Points
 // along one crease fit every plane through it.
 constexpr float kMinSpreadShare = 0.2f;
-// Two planes are the same surface when their normals are within this angle
-// (and they share the border pixel): cos(10 degrees).
-constexpr float kSamePlaneCos = 0.985f;
 // A textureless pixel takes its segment's plane unless that costs this much
 // more than its own (costs of noise-level windows differ by about this much).
 constexpr float kTexturelessMargin = 0.1f;

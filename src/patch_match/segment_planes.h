@@ -17,6 +17,10 @@
 
 namespace msp {
 
+// Two planes through a shared point are the same surface when their normals
+// are within 10 degrees: cos(10 degrees).
+constexpr float kSamePlaneCos = 0.985f;
+
 struct SegmentPlane {
   core::Vec3 normal;    // unit, camera frame
   core::Vec3 point;     // a point of the plane, camera frame

@@ -281,8 +281,9 @@ void DefineMspStereoOptions(MspStereoOptions* m, OptionVisitor* t) {
                  "neighbour with the same plane ends (a window's outline against the sky, a "
                  "roofline); false = every inlier counts.");
   MSP_ADD_OPTION(t, *m, open_sky,
-                 "Leave empty the bright, mostly untextured segments that touch the image border "
-                 "and have no plane of their own (the sky); needs segment_planes.");
+                 "Leave empty the sky-coloured (bright and blue, or white-out), mostly untextured "
+                 "segments that touch the image border and have no plane of their own (the sky); "
+                 "needs segment_planes.");
   MSP_ADD_OPTION(t, *m, depth_range_from_sources,
                  "Depth range of each reference image (unless --PatchMatchStereo.depth_min/max "
                  "are given) from the sparse points it or any of its sources observes in front of "

@@ -144,8 +144,8 @@ struct MspStereoOptions {
   // A segment's plane counts only the support that is its own: not the border where a neighbour
   // with the same plane ends (a window's outline, a roofline) (docs/method.md section 2.10).
   bool segment_plane_own_support = true;
-  // Bright, untextured segments open to the image border with no plane of their own are left
-  // empty: the sky (docs/method.md section 2.11). Needs segment_planes.
+  // Sky-coloured, untextured segments open to the image border with no plane of their own are
+  // left empty: the sky (docs/method.md section 2.11). Needs segment_planes.
   bool open_sky = true;
   // Depth range of a reference image from the sparse points it or any of its sources observes
   // that lie in front of it and inside its image (COLMAP's percentile rule on more points);

@@ -20,6 +20,7 @@
 #include "deformable/deformable_pass.h"
 #include "deformable/deformable_sweeps.h"
 #include "patch_match/image_pyramid.h"
+#include "patch_match/open_sky.h"
 #include "patch_match/pass_schedule.h"
 #include "patch_match/problem_level.h"
 #include "patch_match/run_summary.h"
@@ -29,7 +30,6 @@
 #include "patch_match/step_ledger.h"
 #include "patch_match/sweep_engine.h"
 #include "patch_match/sweeps.h"
-#include "patch_match/open_sky.h"
 #include "patch_match/unlit_pixels.h"
 #include "prior/prior_driver.h"
 

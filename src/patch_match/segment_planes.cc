@@ -130,13 +130,14 @@ void RefitPlane(const std::vector<const SupportPoint*>& inliers, SegmentPlane* p
                             static_cast<float>(mean.z())};
 }
 
-// RANSAC over triples of the support, scored on an even subsample of large
-// supports, then a least-squares refit on the inliers and the checks.
 // Whether inliers at `positions` span two image directions of a segment
 // whose pixels spread `segment_spread` (SecondSpread).
 bool Spans(const std::vector<PixelPosition>& positions, double segment_spread) {
   return SecondSpread(positions) >= kMinSpreadShare * kMinSpreadShare * segment_spread;
 }
+
+// RANSAC over triples of the support, scored on an even subsample of large
+// supports, then a least-squares refit on the inliers and the checks.
 
 SegmentPlane FitOnePlane(const core::PassParams& p, float focal_baseline,
                          const std::vector<SupportPoint>& support, double segment_spread,

@@ -56,10 +56,7 @@ void ThrowIfStopRequested() {
   }
 }
 
-void RequestStop(int signal_number) {
-  main_thread = std::this_thread::get_id();
-  pending_signal.store(signal_number);
-}
+void RequestStop(int signal_number) { pending_signal.store(signal_number); }
 
 void ClearStopRequest() { pending_signal.store(0); }
 

@@ -53,7 +53,8 @@ int PendingStopSignal();
 // early and the installing thread throws after joining them).
 void ThrowIfStopRequested();
 
-// Asks to stop as the handler would (for tests).
+// Asks to stop as the handler would (for tests): from any thread; the thread
+// that unwinds is the one that installed the handlers.
 void RequestStop(int signal_number);
 void ClearStopRequest();
 

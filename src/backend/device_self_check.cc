@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
-#include <functional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,21 +23,27 @@ namespace {
 constexpr int kPhotometricIterations = 2;
 constexpr int kDeformableIterations = 2;
 
-// What a step leaves: the state and, for a step that classifies, the classes.
-struct StepResult {
-  PixelState state;
-  std::vector<uint8_t> classes;
-};
+// The steps, in the order they run; the geometric ones run a geometric pass.
+constexpr const char* kStepNames[] = {"random initialisation", "red-black iterations",
+                                      "geometric scoring and iteration", "deformable step",
+                                      "refinement and classification"};
+constexpr int kNumSteps = sizeof(kStepNames) / sizeof(kStepNames[0]);
+constexpr int kFirstGeometricStep = 2;
+static_assert(kNumSteps == 5, "RunSelfCheckStep has a case for every step");
 
-// One step on `engine` over the params of the state it is given.
-using Step = std::function<std::vector<uint8_t>(SweepEngine& engine, const core::PassParams& params,
-                                                PixelState* state)>;
-
-struct NamedStep {
-  const char* name;
-  bool geometric;
-  Step run;
-};
+void DeformableStep(SweepEngine& engine, const core::PassParams& params, int num_threads,
+                    PixelState* state) {
+  // A geometric pass of the first round that classifies its start, as a
+  // deformable round's second pass with default options.
+  Pass pass;
+  pass.kind = PassKind::kGeometric;
+  pass.index = 1;
+  pass.start = PassStart::kPrevious;
+  pass.sweeps = PassSweeps::kDeformable;
+  pass.iterations = kDeformableIterations;
+  pass.classify_after = 0;
+  DeformablePass(MspStereoOptions(), num_threads, &engine).Run(pass, params, state);
+}
 
 bool Within(float a, float b, float tolerance) { return std::fabs(a - b) <= tolerance; }
 
@@ -54,66 +60,6 @@ bool SamePixel(const PixelState& a, const PixelState& b, size_t i) {
   return Within(a.cost[i], b.cost[i], kSelfCheckCostTolerance);
 }
 
-// Share of the pixels whose plane, views, cost or class differ.
-double DifferingShare(const StepResult& a, const StepResult& b) {
-  const size_t n = a.state.depth.size();
-  if (b.state.depth.size() != n || a.classes.size() != b.classes.size()) return 1.0;
-  size_t differ = 0;
-  for (size_t i = 0; i < n; ++i) {
-    const bool same_class = a.classes.empty() || a.classes[i] == b.classes[i];
-    if (!same_class || !SamePixel(a.state, b.state, i)) ++differ;
-  }
-  return static_cast<double>(differ) / static_cast<double>(n);
-}
-
-StepResult RunStep(const SelfCheckProblem& problem, const NamedStep& step, const PixelState& start,
-                   SweepEngine& engine) {
-  StepResult result{start, {}};
-  const core::PassParams params = problem.Params(step.geometric, &result.state);
-  result.classes = step.run(engine, params, &result.state);
-  return result;
-}
-
-std::vector<NamedStep> Steps(int num_threads) {
-  const auto deformable = [num_threads](SweepEngine& engine, const core::PassParams& params,
-                                        PixelState* state) {
-    // A geometric pass of the first round that classifies its start, as a
-    // deformable round's second pass with default options.
-    Pass pass;
-    pass.kind = PassKind::kGeometric;
-    pass.index = 1;
-    pass.start = PassStart::kPrevious;
-    pass.sweeps = PassSweeps::kDeformable;
-    pass.iterations = kDeformableIterations;
-    pass.classify_after = 0;
-    DeformablePass(MspStereoOptions(), num_threads, &engine).Run(pass, params, state);
-    return std::vector<uint8_t>();
-  };
-  return {
-      {"random initialisation", false,
-       [](SweepEngine& e, const core::PassParams& p, PixelState*) {
-         e.Initialize(p);
-         return std::vector<uint8_t>();
-       }},
-      {"red-black iterations", false,
-       [](SweepEngine& e, const core::PassParams& p, PixelState*) {
-         e.Checkerboard(p, kPhotometricIterations);
-         return std::vector<uint8_t>();
-       }},
-      {"geometric scoring and iteration", true,
-       [](SweepEngine& e, const core::PassParams& p, PixelState*) {
-         e.Score(p);
-         e.Checkerboard(p, 1);
-         return std::vector<uint8_t>();
-       }},
-      {"deformable step", true, deformable},
-      {"refinement and classification", true,
-       [](SweepEngine& e, const core::PassParams& p, PixelState*) {
-         return e.LocalRefineAndClassify(p, core::DefaultReliabilityParams(0));
-       }},
-  };
-}
-
 std::string Percent(double share) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.2f %%", 100.0 * share);
@@ -122,6 +68,48 @@ std::string Percent(double share) {
 
 }  // namespace
 
+int NumSelfCheckSteps() { return kNumSteps; }
+
+const char* SelfCheckStepName(int step) {
+  if (step < 0 || step >= kNumSteps) throw std::out_of_range("SelfCheckStepName: no such step");
+  return kStepNames[step];
+}
+
+std::vector<uint8_t> RunSelfCheckStep(int step, const SelfCheckProblem& problem,
+                                      SweepEngine& engine, int num_threads, PixelState* state) {
+  const core::PassParams p = problem.Params(step >= kFirstGeometricStep, state);
+  switch (step) {
+    case 0:
+      engine.Initialize(p);
+      return {};
+    case 1:
+      engine.Checkerboard(p, kPhotometricIterations);
+      return {};
+    case 2:
+      engine.Score(p);
+      engine.Checkerboard(p, 1);
+      return {};
+    case 3:
+      DeformableStep(engine, p, num_threads, state);
+      return {};
+    case 4:
+      return engine.LocalRefineAndClassify(p, core::DefaultReliabilityParams(0));
+  }
+  throw std::out_of_range("RunSelfCheckStep: no such step");
+}
+
+double SelfCheckDifferingShare(const PixelState& a, const std::vector<uint8_t>& a_classes,
+                               const PixelState& b, const std::vector<uint8_t>& b_classes) {
+  const size_t n = a.depth.size();
+  if (b.depth.size() != n || a_classes.size() != b_classes.size() || n == 0) return 1.0;
+  size_t differ = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const bool same_class = a_classes.empty() || a_classes[i] == b_classes[i];
+    if (!same_class || !SamePixel(a, b, i)) ++differ;
+  }
+  return static_cast<double>(differ) / static_cast<double>(n);
+}
+
 SelfCheckReport SelfCheckAgainstCpu(SweepEngine& device, int num_threads) {
   const SelfCheckProblem problem;
   CpuSweepEngine cpu(num_threads);
@@ -129,20 +117,23 @@ SelfCheckReport SelfCheckAgainstCpu(SweepEngine& device, int num_threads) {
   report.passed = true;
   std::string shares;
   PixelState start = problem.EmptyState();
-  for (const NamedStep& step : Steps(num_threads)) {
-    StepResult on_cpu = RunStep(problem, step, start, cpu);
-    StepResult on_device;
+  for (int step = 0; step < NumSelfCheckSteps(); ++step) {
+    PixelState on_cpu = start, on_device = start;
+    const std::vector<uint8_t> cpu_classes =
+        RunSelfCheckStep(step, problem, cpu, num_threads, &on_cpu);
+    std::vector<uint8_t> device_classes;
     try {
-      on_device = RunStep(problem, step, start, device);
+      device_classes = RunSelfCheckStep(step, problem, device, num_threads, &on_device);
     } catch (const std::exception& e) {
       report.passed = false;
-      report.figures = std::string(step.name) + " failed on the device: " + e.what();
+      report.figures = std::string(SelfCheckStepName(step)) + " failed on the device: " + e.what();
       return report;
     }
-    const double share = DifferingShare(on_cpu, on_device);
+    const double share = SelfCheckDifferingShare(on_cpu, cpu_classes, on_device, device_classes);
     if (share > kSelfCheckMaxDifferingShare) report.passed = false;
-    shares += (shares.empty() ? "" : ", ") + std::string(step.name) + " " + Percent(share);
-    start = std::move(on_cpu.state);
+    shares +=
+        (shares.empty() ? "" : ", ") + std::string(SelfCheckStepName(step)) + " " + Percent(share);
+    start = std::move(on_cpu);
   }
   report.figures = "pixels differing from the CPU core: " + shares + " (bound " +
                    Percent(kSelfCheckMaxDifferingShare) + " in each step)";

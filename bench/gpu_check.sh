@@ -4,7 +4,8 @@
 #   2. runs the gpu tests (ctest -L gpu: CPU/GPU parity per kernel family and
 #      on the bundled scene at 320x240); a skipped test is a failure here,
 #   3. runs the bundled scene at 640x480 on both back-ends (same seed) and
-#      prints per-image time, peak device memory (the run's buffers, and
+#      prints the CUDA run's start-up self-check (src/backend/device_self_check.h),
+#      per-image time, peak device memory (the run's buffers, and
 #      nvidia-smi's peak of the whole process) and the fused F1 of both
 #      (colmap stereo_fusion + msp_evaluate).
 # Any unexpected result stops it with "gpu_check: FAILED: ..." and exit 1.
@@ -71,6 +72,10 @@ for backend in cpu cuda; do
   end=$(date +%s.%N)
   kill "$smi"; wait "$smi" 2>/dev/null || true
   grep -q "^Back-end: $backend " "$out/$backend.log" || fail "$backend run did not use the $backend back-end"
+  if [ "$backend" = cuda ]; then
+    # The start-up self-check passed (else the run stopped): its figures.
+    grep "^Self-check of GPU" "$out/$backend.log" || fail "the cuda run printed no self-check"
+  fi
   num_images=$(ls "$ws/stereo/depth_maps/"*.geometric.bin | wc -l)
   [ "$num_images" -gt 0 ] || fail "$backend run wrote no geometric depth map"
   "$colmap_bin" stereo_fusion --workspace_path "$ws" --input_type geometric \

@@ -10,9 +10,11 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "backend/backend_choice.h"
 #include "base/log.h"
 #include "base/stop_request.h"
 #include "colmap_ext/errors.h"
@@ -162,14 +164,16 @@ void RunChecked(const StereoCommandOptions& options, bool* stop_reported) {
   // Before reading: a second run on the workspace stops at once. A workspace
   // without stereo/ (possible with --config_path) is locked once it has read;
   // a back-end that cannot run reads it and stops without creating the lock.
-  bool backend_runs = true;
+  // The back-end is chosen once: a CUDA device's self-check runs here.
+  std::optional<BackendChoice> backend;
+  std::exception_ptr backend_error;
   try {
-    CheckBackendCanRun(options.patch_match, options.msp);
+    backend = ChooseStereoBackend(options.patch_match, options.msp);
   } catch (const std::runtime_error&) {
-    backend_runs = false;
+    backend_error = std::current_exception();
   }
   Locks locks;
-  if (backend_runs && IsDirectory(JoinPaths(options.workspace_path, "stereo"))) {
+  if (backend && IsDirectory(JoinPaths(options.workspace_path, "stereo"))) {
     locks = LockWorkspace(options.workspace_path, options.msp);
   }
   LogText(kLogAlways, "Reading workspace " + options.workspace_path + "...\n");
@@ -178,7 +182,7 @@ void RunChecked(const StereoCommandOptions& options, bool* stop_reported) {
               << " problems\n";
   // Before the first file is written: a back-end that cannot run leaves the
   // workspace as it was.
-  CheckBackendCanRun(options.patch_match, options.msp);
+  if (backend_error) std::rethrow_exception(backend_error);
   if (locks.empty()) locks = LockWorkspace(workspace.path, options.msp);
   WriteFusionConfigIfMissing(workspace);
 
@@ -206,7 +210,7 @@ void RunChecked(const StereoCommandOptions& options, bool* stop_reported) {
   }
 
   try {
-    RunStereo(workspace.views, workspace.problems, options.patch_match, options.msp,
+    RunStereo(*backend, workspace.views, workspace.problems, options.patch_match, options.msp,
               ScratchDir(workspace.path, options.msp), writer, shared.get());
   } catch (const StopRequested& stop) {
     const std::string message = "Stopped by " + SignalName(stop.signal_number()) +

@@ -1,14 +1,24 @@
 // The CUDA runtime's answer to the back-end choice: the devices present, with
-// their free memory and what the kernels reserve on each.
+// their free memory and what the kernels reserve on each, and the device
+// self-check run by the CUDA sweeps.
 #include "backend/device_query.h"
 
 #include <cuda_runtime.h>
 
+#include <exception>
+#include <string>
+
+#include "backend/device_self_check.h"
 #include "cuda/cuda_check.h"
+#include "cuda/cuda_sweep_engine.h"
 #include "cuda/kernel_reserve.h"
 
 namespace msp {
 namespace {
+
+// The CPU side of the self-check: its problem is a few thousand pixels,
+// a fraction of a second on one thread.
+constexpr int kSelfCheckCpuThreads = 1;
 
 class CudaDeviceQuery : public DeviceQuery {
  public:
@@ -27,6 +37,17 @@ class CudaDeviceQuery : public DeviceQuery {
     std::vector<DeviceInfo> devices;
     for (int d = 0; d < count; ++d) devices.push_back(Describe(d));
     return devices;
+  }
+
+  SelfCheckReport SelfCheck(const DeviceInfo& device) const override {
+    try {
+      // The problem's image runs on the engine's default device.
+      cuda::CudaSweepEngine engine({}, device.index);
+      return SelfCheckAgainstCpu(engine, kSelfCheckCpuThreads);
+    } catch (const std::exception& e) {
+      cudaGetLastError();  // leave no error behind for the CPU run that follows
+      return SelfCheckReport{false, e.what()};
+    }
   }
 
  private:

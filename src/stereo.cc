@@ -9,25 +9,19 @@
 #include "patch_match/patch_match_cpu.h"
 
 namespace msp {
-namespace {
 
-BackendChoice ResolveBackend(const PatchMatchStereoOptions& patch_match,
-                             const MspStereoOptions& msp) {
+BackendChoice ChooseStereoBackend(const PatchMatchStereoOptions& patch_match,
+                                  const MspStereoOptions& msp) {
   const std::unique_ptr<DeviceQuery> query = MakeDeviceQuery();
   return ChooseBackend(msp.backend, patch_match.gpu_index, *query);
 }
 
-}  // namespace
-
-void CheckBackendCanRun(const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp) {
-  ResolveBackend(patch_match, msp);
-}
-
-void RunStereo(const std::vector<View>& views, const std::vector<Problem>& problems,
-               const PatchMatchStereoOptions& patch_match, const MspStereoOptions& msp,
-               const std::string& scratch_dir, MapSink& sink, const SharedRun* shared) {
-  const BackendChoice choice = ResolveBackend(patch_match, msp);
+void RunStereo(const BackendChoice& choice, const std::vector<View>& views,
+               const std::vector<Problem>& problems, const PatchMatchStereoOptions& patch_match,
+               const MspStereoOptions& msp, const std::string& scratch_dir, MapSink& sink,
+               const SharedRun* shared) {
   LogText(kLogAlways, DescribeChoice(choice) + "\n");
+  for (const std::string& line : choice.self_checks) LogText(kLogAlways, line + "\n");
   if (choice.backend == "cpu") {
     RunPatchMatchCpu(views, problems, patch_match, msp, scratch_dir, sink, shared);
     return;

@@ -1,7 +1,7 @@
 // What the back-end choice needs to know about CUDA devices, behind an
-// interface: the CUDA build answers with the runtime's device list
-// (cuda/device_query.cc), a build without CUDA with none, and tests with a
-// fake list.
+// interface: the CUDA build answers with the runtime's device list and runs
+// the self-check on a device (cuda/device_query.cc), a build without CUDA
+// with none, and tests with a fake list.
 #pragma once
 
 #include <cstddef>
@@ -23,6 +23,14 @@ struct DeviceInfo {
   size_t reserve_bytes = 0;
 };
 
+// The outcome of a device's self-check (device_self_check.h): whether the
+// device's kernels and the CPU core agreed on a small synthetic problem, and
+// the figures (or the CUDA error) in one line.
+struct SelfCheckReport {
+  bool passed = false;
+  std::string figures;
+};
+
 class DeviceQuery {
  public:
   virtual ~DeviceQuery() = default;
@@ -31,6 +39,9 @@ class DeviceQuery {
   // The devices present; when there are none, *why_none says why (e.g. the
   // runtime's error for a machine without a driver).
   virtual std::vector<DeviceInfo> Devices(std::string* why_none) const = 0;
+  // Runs the self-check on `device` (one of Devices()); never throws: a
+  // CUDA error is a failed check whose figures name the error.
+  virtual SelfCheckReport SelfCheck(const DeviceInfo& device) const = 0;
 };
 
 // The query of this build: CUDA's runtime in a CUDA build, else one that

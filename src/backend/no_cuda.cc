@@ -13,6 +13,9 @@ class NoCudaQuery : public DeviceQuery {
     *why_none = "built without CUDA";
     return {};
   }
+  SelfCheckReport SelfCheck(const DeviceInfo&) const override {
+    return SelfCheckReport{false, "built without CUDA"};
+  }
 };
 
 }  // namespace

@@ -9,7 +9,8 @@
 namespace msp {
 namespace {
 
-// A device list for the choice, without CUDA.
+// A device list for the choice, without CUDA; every device passes its
+// self-check unless FailSelfCheck names it.
 class FakeQuery : public DeviceQuery {
  public:
   FakeQuery(bool built, int num_devices) : built_(built) {
@@ -30,11 +31,32 @@ class FakeQuery : public DeviceQuery {
     if (devices_.empty()) *why_none = "no driver";
     return devices_;
   }
+  SelfCheckReport SelfCheck(const DeviceInfo& device) const override {
+    checked_.push_back(device.index);
+    if (device.index == failing_) return SelfCheckReport{false, failure_};
+    return SelfCheckReport{true, "pixels differing from the CPU core: 0.00 %"};
+  }
+
+  // Device `index` fails its self-check with `figures`.
+  void FailSelfCheck(int index, const std::string& figures) {
+    failing_ = index;
+    failure_ = figures;
+  }
+  // The devices self-checked so far, in order.
+  const std::vector<int>& checked() const { return checked_; }
 
  private:
   bool built_;
   std::vector<DeviceInfo> devices_;
+  int failing_ = -1;
+  std::string failure_;
+  mutable std::vector<int> checked_;
 };
+
+// What a failing self-check reports: a step's share beyond the bound.
+constexpr char kMismatch[] =
+    "pixels differing from the CPU core: random initialisation 0.00 %, red-black iterations "
+    "37.50 % (bound 1.00 % in each step)";
 
 std::string ChoiceError(const std::string& backend, const std::string& gpu_index,
                         const DeviceQuery& query) {
@@ -46,13 +68,23 @@ std::string ChoiceError(const std::string& backend, const std::string& gpu_index
   return "";
 }
 
-TEST(BackendChoice, AutoTakesCudaWhenADeviceIsPresent) {
-  const BackendChoice c = ChooseBackend("auto", "-1", FakeQuery(true, 2));
+TEST(BackendChoice, AutoTakesCudaWhenADeviceIsPresentAndPassesItsSelfCheck) {
+  const FakeQuery query(true, 2);
+  const BackendChoice c = ChooseBackend("auto", "-1", query);
   EXPECT_EQ(c.backend, "cuda");
   ASSERT_EQ(c.workers.size(), 2u);
   EXPECT_EQ(c.workers[1].index, 1);
+  EXPECT_EQ(query.checked(), (std::vector<int>{0, 1}));
+  // The figures of each device's check, for the log.
+  EXPECT_EQ(c.self_checks,
+            (std::vector<std::string>{
+                "Self-check of GPU 0 Fake GPU 0: pixels differing from the CPU core: 0.00 %",
+                "Self-check of GPU 1 Fake GPU 1: pixels differing from the CPU core: 0.00 %"}));
   const std::string log = DescribeChoice(c);
-  EXPECT_NE(log.find("Back-end: cuda (auto: CUDA device found)"), std::string::npos) << log;
+  EXPECT_NE(
+      log.find("Back-end: cuda (auto: CUDA device found, self-check against the CPU core passed)"),
+      std::string::npos)
+      << log;
   EXPECT_NE(log.find("worker 1 on GPU 1 Fake GPU 1 (compute 8.6, 6144 of 8192 MiB free)"),
             std::string::npos)
       << log;
@@ -68,20 +100,63 @@ TEST(BackendChoice, AutoFallsBackToCpuAndSaysWhy) {
   EXPECT_NE(DescribeChoice(no_build).find("built without the CUDA back-end"), std::string::npos);
 }
 
+// A device whose kernels disagree with the CPU core (or throw a CUDA error)
+// is not trusted: auto runs on the CPU and says why in its one line.
+TEST(BackendChoice, AutoFallsBackToCpuWhenADeviceFailsItsSelfCheck) {
+  FakeQuery query(true, 2);
+  query.FailSelfCheck(1, kMismatch);
+  const BackendChoice c = ChooseBackend("auto", "-1", query);
+  EXPECT_EQ(c.backend, "cpu");
+  EXPECT_TRUE(c.workers.empty());
+  EXPECT_EQ(DescribeChoice(c),
+            std::string("Back-end: cpu (auto: GPU 1 Fake GPU 1 failed its self-check against the "
+                        "CPU core: ") +
+                kMismatch + "; running on the CPU)");
+  // A device the workers do not use is not checked, so it cannot fail the run.
+  FakeQuery unused(true, 2);
+  unused.FailSelfCheck(1, kMismatch);
+  EXPECT_EQ(ChooseBackend("auto", "0", unused).backend, "cuda");
+  EXPECT_EQ(unused.checked(), std::vector<int>{0});
+}
+
+TEST(BackendChoice, CudaStopsWithTheFiguresWhenADeviceFailsItsSelfCheck) {
+  FakeQuery query(true, 1);
+  query.FailSelfCheck(0, kMismatch);
+  EXPECT_EQ(ChoiceError("cuda", "-1", query),
+            std::string("--MspStereo.backend cuda: GPU 0 Fake GPU 0 failed its self-check against "
+                        "the CPU core: ") +
+                kMismatch +
+                "; use --MspStereo.backend cpu, and run bench/gpu_check.sh on this machine");
+  FakeQuery cuda_error(true, 1);
+  cuda_error.FailSelfCheck(0, "random initialisation failed on the device: cudaErrorLaunchFailure");
+  EXPECT_NE(ChoiceError("cuda", "0", cuda_error).find("cudaErrorLaunchFailure"), std::string::npos);
+}
+
 TEST(BackendChoice, CpuNeverAsksForDevicesNorReadsGpuIndex) {
-  const BackendChoice c = ChooseBackend("cpu", "not a list", FakeQuery(false, 0));
+  const FakeQuery query(false, 0);
+  const BackendChoice c = ChooseBackend("cpu", "not a list", query);
   EXPECT_EQ(c.backend, "cpu");
   EXPECT_EQ(DescribeChoice(c), "Back-end: cpu (requested)");
+  EXPECT_TRUE(query.checked().empty());
+  // Nor does it self-check a device that is there.
+  const FakeQuery with_device(true, 1);
+  ChooseBackend("cpu", "-1", with_device);
+  EXPECT_TRUE(with_device.checked().empty());
 }
 
 TEST(BackendChoice, CudaHonoursGpuIndex) {
-  const BackendChoice c = ChooseBackend("cuda", "1,0,1", FakeQuery(true, 2));
+  const FakeQuery query(true, 2);
+  const BackendChoice c = ChooseBackend("cuda", "1,0,1", query);
   EXPECT_EQ(c.backend, "cuda");
   ASSERT_EQ(c.workers.size(), 3u);
   EXPECT_EQ(c.workers[0].index, 1);
   EXPECT_EQ(c.workers[1].index, 0);
   EXPECT_EQ(c.workers[2].index, 1);
-  EXPECT_NE(DescribeChoice(c).find("Back-end: cuda (requested)"), std::string::npos);
+  // Each device self-checked once, however many workers it has.
+  EXPECT_EQ(query.checked(), (std::vector<int>{1, 0}));
+  EXPECT_NE(DescribeChoice(c).find("Back-end: cuda (requested, self-check against the CPU core "
+                                   "passed)"),
+            std::string::npos);
 }
 
 TEST(BackendChoice, CudaThatCannotRunIsAClearError) {

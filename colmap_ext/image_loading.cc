@@ -1,5 +1,7 @@
 #include "colmap_ext/image_loading.h"
 
+#include <cstdint>
+#include <fstream>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -7,6 +9,7 @@
 #include <vector>
 
 #include "colmap_ext/errors.h"
+#include "colmap_ext/image_header.h"
 
 namespace msp {
 namespace {
@@ -20,10 +23,46 @@ void CopyPlane(const cv::Mat& plane, float* out) {
   }
 }
 
+[[noreturn]] void ThrowSizeMismatch(const std::string& path, uint64_t image_width,
+                                    uint64_t image_height, int width, int height) {
+  throw InputError(path + ": image is " + std::to_string(image_width) + "x" +
+                   std::to_string(image_height) + " but its camera in the sparse model is " +
+                   std::to_string(width) + "x" + std::to_string(height) +
+                   " (use the images written by `colmap image_undistorter`)");
+}
+
+// Before anything is decoded: the camera may not be larger than
+// kMaxImagePixels, the file must be of a format image_header.h knows, and its
+// header must declare the camera's size, since the decoder allocates whatever
+// the header declares (a 45-byte PNG may declare 40000x20000).
+void CheckImageHeader(const std::string& path, int width, int height) {
+  if (static_cast<uint64_t>(width) * static_cast<uint64_t>(height) > kMaxImagePixels) {
+    throw InputError(path + ": its camera in the sparse model is " + std::to_string(width) + "x" +
+                     std::to_string(height) + ", more than the " + std::to_string(kMaxImagePixels) +
+                     " pixels an image may have");
+  }
+  if (!std::ifstream(path, std::ios::binary)) {
+    throw InputError(path + ": cannot read image: no such file, or not readable");
+  }
+  const ImageFormat format = DetectImageFormat(path);
+  if (format == ImageFormat::kUnknown) {
+    throw InputError(path + ": cannot read image: not a PNG, JPEG, TIFF or BMP file");
+  }
+  uint32_t header_width = 0, header_height = 0;
+  if (!ReadImageSize(path, format, &header_width, &header_height)) {
+    throw InputError(path + ": cannot read image: corrupt " + ImageFormatName(format) + " header");
+  }
+  if (header_width != static_cast<uint32_t>(width) ||
+      header_height != static_cast<uint32_t>(height)) {
+    ThrowSizeMismatch(path, header_width, header_height, width, height);
+  }
+}
+
 }  // namespace
 
 void LoadViewImage(const std::string& path, int width, int height, int new_width, int new_height,
                    DenseMap* gray, DenseMap* color) {
+  CheckImageHeader(path, width, height);
   cv::Mat bgr;
   try {
     bgr = cv::imread(path, cv::IMREAD_COLOR);
@@ -34,10 +73,7 @@ void LoadViewImage(const std::string& path, int width, int height, int new_width
     throw InputError(path + ": cannot read image (corrupt file or unsupported format)");
   }
   if (bgr.cols != width || bgr.rows != height) {
-    throw InputError(path + ": image is " + std::to_string(bgr.cols) + "x" +
-                     std::to_string(bgr.rows) + " but its camera in the sparse model is " +
-                     std::to_string(width) + "x" + std::to_string(height) +
-                     " (use the images written by `colmap image_undistorter`)");
+    ThrowSizeMismatch(path, bgr.cols, bgr.rows, width, height);
   }
   // Convert to float before resizing so neither step rounds to 8 bits.
   cv::Mat bgr_float;

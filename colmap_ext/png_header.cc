@@ -22,6 +22,13 @@ uint32_t BigEndian32(const unsigned char* bytes) {
 
 }  // namespace
 
+bool HasPngSignature(const std::string& path) {
+  unsigned char signature[sizeof(kSignature)] = {};
+  std::ifstream file(path, std::ios::binary);
+  file.read(reinterpret_cast<char*>(signature), sizeof(signature));
+  return file && std::equal(kSignature, kSignature + sizeof(kSignature), signature);
+}
+
 bool ReadPngSize(const std::string& path, uint32_t* width, uint32_t* height) {
   unsigned char header[kHeaderBytes] = {};
   std::ifstream file(path, std::ios::binary);

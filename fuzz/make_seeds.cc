@@ -6,6 +6,7 @@
 //   patch-match.cfg: the workspace's, and __all__ / explicit-list variants;
 //   project ini: every option of msp_stereo at its default, in ini sections;
 //   mask layer: 16-bit region ids of the first image at 16x12, and an 8-bit one;
+//   workspace image: the first image at 16x12 as PNG, JPEG, TIFF and BMP;
 //   RGB-D capture: the first image's K, camera-to-world pose and ground-truth
 //   depth at 16x12 in millimetres, as msp_import_rgbd reads them.
 #include <Eigen/Core>
@@ -34,7 +35,8 @@ constexpr size_t kSeedImages = 3;
 constexpr size_t kSeedPoints = 4;
 constexpr int kMapCropWidth = 8;
 constexpr int kMapCropHeight = 6;
-// The size mask_layer_fuzzer reads layers at and rgbd_capture_fuzzer's depth.
+// The size mask_layer_fuzzer reads layers at, workspace_image_fuzzer's camera
+// and rgbd_capture_fuzzer's depth.
 constexpr int kMaskWidth = 16;
 constexpr int kMaskHeight = 12;
 
@@ -171,6 +173,21 @@ void WriteMaskSeeds(const std::string& workspace, const std::string& image_name,
   }
 }
 
+void WriteImageSeeds(const std::string& workspace, const std::string& image_name,
+                     const std::string& out) {
+  const cv::Mat image = cv::imread(JoinPaths(workspace, "images/" + image_name), cv::IMREAD_COLOR);
+  if (image.empty()) throw InputError("cannot read image " + image_name + " of " + workspace);
+  cv::Mat small;
+  cv::resize(image, small, cv::Size(kMaskWidth, kMaskHeight), 0, 0, cv::INTER_AREA);
+  const std::string dir = JoinPaths(out, "workspace_image_fuzzer");
+  CreateDirectories(dir);
+  for (const char* name : {"image.png", "image.jpg", "image.tiff", "image.bmp"}) {
+    if (!cv::imwrite(JoinPaths(dir, name), small)) {
+      throw InputError(std::string("cannot write ") + name);
+    }
+  }
+}
+
 // K.txt, poses.txt and the depth PNG of the first image, joined at the part
 // separator; and the same with the depth as an 8-bit PNG, which is refused.
 void WriteRgbdSeeds(const std::string& workspace, const SparseModel& model,
@@ -225,6 +242,7 @@ int Run(int argc, char** argv) {
   WriteConfigSeeds(workspace, model, out);
   WriteIniSeed(out);
   WriteMaskSeeds(workspace, first_image, out);
+  WriteImageSeeds(workspace, first_image, out);
   WriteRgbdSeeds(workspace, model, out);
   return 0;
 }

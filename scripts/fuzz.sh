@@ -16,7 +16,8 @@ cd "$(dirname "$0")/.."
 
 BUILD="${MSP_FUZZ_BUILD_DIR:-build-fuzz}"
 TARGETS=(sparse_model_binary_fuzzer sparse_model_text_fuzzer dense_map_fuzzer
-         patch_match_config_fuzzer project_ini_fuzzer mask_layer_fuzzer rgbd_capture_fuzzer)
+         patch_match_config_fuzzer project_ini_fuzzer mask_layer_fuzzer workspace_image_fuzzer
+         rgbd_capture_fuzzer)
 
 mkdir -p "$BUILD"
 CC=clang CXX=clang++ cmake -S . -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \

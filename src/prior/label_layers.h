@@ -6,7 +6,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <string>
 #include <vector>
 
 namespace msp {
@@ -26,10 +25,6 @@ struct LabelLayers {
 // Where an image's layers come from: user mask files, or the embedded
 // segmenter (multiscale_segmentation.h) when the image has none.
 enum class LabelSource { kMaskFiles, kEmbeddedSegmenter };
-
-inline std::string LabelSourceName(LabelSource source) {
-  return source == LabelSource::kMaskFiles ? "mask files" : "embedded segmenter";
-}
 
 // The layers of one image and their source; `layers` is empty for
 // kEmbeddedSegmenter until the segmenter has run.

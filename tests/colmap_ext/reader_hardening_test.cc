@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "colmap_ext/image_loading.h"
 #include "colmap_ext/mask_layers.h"
 #include "colmap_ext/patch_match_config.h"
 #include "colmap_ext/sparse_model.h"
@@ -25,19 +26,37 @@ std::string Bytes(std::initializer_list<unsigned char> bytes) {
 }
 
 // A valid PNG header (correct CRC) declaring a 40000x20000 16-bit grey image
-// with no pixel data: OpenCV's decoder would allocate its 1.6 GB first and
-// only then find the data missing.
+// with no pixel data, 45 bytes: OpenCV's decoder would allocate its 1.6 GB
+// first and only then find the data missing.
+std::string HugePng() {
+  return Bytes({0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d,
+                0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x9c, 0x40, 0x00, 0x00, 0x4e, 0x20,
+                0x10, 0x00, 0x00, 0x00, 0x00, 0x10, 0x5f, 0x90, 0xac, 0x00, 0x00, 0x00,
+                0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82});
+}
+
 TEST(ReaderHardening, MaskLayerDeclaringAHugeImageIsRefusedFromItsHeader) {
-  const std::string png = Bytes({
-      0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44,
-      0x52, 0x00, 0x00, 0x9c, 0x40, 0x00, 0x00, 0x4e, 0x20, 0x10, 0x00, 0x00, 0x00, 0x00, 0x10,
-      0x5f, 0x90, 0xac, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82});
   TempDir dir;
   const std::string path = MaskLayerPath(dir.path(), "a.png", 0);
-  test::WriteRaw(path, png);
+  test::WriteRaw(path, HugePng());
   const std::string message = InputErrorMessage(
       [&] { ReadMaskLayers(dir.path(), MaskImage{"a.png", 16, 12, 16, 12}, 1); });
   EXPECT_NE(message.find(path + ": mask layer is 40000x20000 but its image a.png is 16x12"),
+            std::string::npos)
+      << message;
+}
+
+// The same header as a workspace image of a 16x12 camera: refused before
+// OpenCV allocates the 2.4 GB of its colour planes.
+TEST(ReaderHardening, WorkspaceImageDeclaringAHugeImageIsRefusedFromItsHeader) {
+  TempDir dir;
+  const std::string path = dir.path() + "/images/a.png";
+  test::WriteRaw(path, HugePng());
+  DenseMap gray, color;
+  const std::string message =
+      InputErrorMessage([&] { LoadViewImage(path, 16, 12, 16, 12, &gray, &color); });
+  EXPECT_NE(message.find(path + ": image is 40000x20000 but its camera in the sparse model is "
+                                "16x12"),
             std::string::npos)
       << message;
 }

@@ -297,14 +297,6 @@ MSP_HD bool FitAnchors(const Camera& cam, const AnchorMaps& maps, int col, int r
   return true;
 }
 
-// Full anchor search for pixel (col, row): the rays, then the RANSAC fit.
-MSP_HD bool FindAnchors(const Camera& cam, const AnchorMaps& maps, int col, int row,
-                        const AnchorParams& params, Rng* rng, AnchorSet* out) {
-  AnchorHits hits;
-  CastAnchorHits(maps, col, row, params, &hits);
-  return FitAnchors(cam, maps, col, row, params, hits, rng, out);
-}
-
 // p's hypothesis on the anchors' RANSAC plane (depth 0 when the ray misses it).
 MSP_HD PlaneHypothesis AnchorPlaneHypothesis(const Camera& cam, const AnchorSet& anchors, int col,
                                              int row) {

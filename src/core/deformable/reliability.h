@@ -284,14 +284,6 @@ class CostCurveSampler {
   bool exact_[kMaxSweepSamples];
 };
 
-// Writes the whole curve (kCurveSamples costs); false when the pixel is unknown.
-MSP_HD bool SampleCostCurve(const PassParams& p, int col, int row, float* curve) {
-  CostCurveSampler sampler;
-  if (!sampler.Prepare(p, col, row)) return false;
-  for (int k = 0; k < kCurveSamples; ++k) curve[k] = sampler.At(k);
-  return true;
-}
-
 // kReliable / kUnreliable / kUnknown for pixel (col, row) after a pass.
 MSP_HD uint8_t ClassifyPixel(const PassParams& p, int col, int row,
                              const ReliabilityParams& params) {

@@ -21,7 +21,6 @@ struct Mat3 {
   float m[9];
 };
 
-MSP_HD Vec3 MakeVec3(float x, float y, float z) { return Vec3{x, y, z}; }
 MSP_HD Vec3 operator+(Vec3 a, Vec3 b) { return Vec3{a.x + b.x, a.y + b.y, a.z + b.z}; }
 MSP_HD Vec3 operator-(Vec3 a, Vec3 b) { return Vec3{a.x - b.x, a.y - b.y, a.z - b.z}; }
 MSP_HD Vec3 operator*(float s, Vec3 a) { return Vec3{s * a.x, s * a.y, s * a.z}; }

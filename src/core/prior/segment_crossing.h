@@ -65,19 +65,6 @@ MSP_HD bool SegmentCrossesBoundary(const BoundaryView& boundary, int p_col, int 
   return false;
 }
 
-// The subset S_n of anchors 0..num_anchors-1 (at most kMaxPriorAnchors) whose
-// line from p crosses no boundary of `boundary`, as a bit set (bit i = anchor i).
-MSP_HD uint32_t AdmissibleAnchors(const BoundaryView& boundary, int p_col, int p_row,
-                                  const int* anchor_cols, const int* anchor_rows, int num_anchors) {
-  uint32_t subset = 0u;
-  for (int i = 0; i < num_anchors && i < kMaxPriorAnchors; ++i) {
-    if (!SegmentCrossesBoundary(boundary, p_col, p_row, anchor_cols[i], anchor_rows[i])) {
-      subset |= 1u << i;
-    }
-  }
-  return subset;
-}
-
 // All layers' boundary maps packed into one image: bit n of a pixel = the
 // pixel is on B_n. Lets one walk along p -> s test every layer at once.
 struct LayerBoundaryView {

@@ -21,6 +21,15 @@ constexpr float kDepthRange = 10.0f;
 constexpr int kMaxDistance = 100;
 constexpr float kPi = 3.14159265f;
 
+// The whole anchor search for pixel (col, row), as the deformable sweeps run
+// it: the rays, then the RANSAC fit.
+bool FindAnchors(const Camera& cam, const AnchorMaps& maps, int col, int row,
+                 const AnchorParams& params, Rng* rng, AnchorSet* out) {
+  AnchorHits hits;
+  CastAnchorHits(maps, col, row, params, &hits);
+  return FitAnchors(cam, maps, col, row, params, hits, rng, out);
+}
+
 // A reference camera and the slanted plane every reliable pixel lies on.
 struct Layout {
   Camera cam = test::SkewedIntrinsicsCamera(kSize, kSize, 100.0f, test::Identity(), Vec3{0, 0, 0});

@@ -24,6 +24,15 @@ constexpr float kDepthRange = 10.0f;
 constexpr int kMaxDistance = 100;
 constexpr double kPi = 3.14159265358979;
 
+// The whole anchor search for pixel (col, row), as the deformable sweeps run
+// it: the rays, then the RANSAC fit.
+bool FindAnchors(const Camera& cam, const AnchorMaps& maps, int col, int row,
+                 const AnchorParams& params, Rng* rng, AnchorSet* out) {
+  AnchorHits hits;
+  CastAnchorHits(maps, col, row, params, &hits);
+  return FitAnchors(cam, maps, col, row, params, hits, rng, out);
+}
+
 // Angle of the offset (dx, dy) from p in degrees, in [-180, 180].
 double AngleOf(double dx, double dy) { return std::atan2(dy, dx) * 180.0 / kPi; }
 

@@ -82,9 +82,9 @@ TEST(Reliability, ThresholdsAreParameters) {
 TEST(Reliability, TexturedPlaneAtItsTrueDepthIsReliable) {
   test::PlaneScene s;
   test::MakeScene(4.0f, true, &s);
-  float curve[kCurveSamples];
-  ASSERT_TRUE(SampleCostCurve(s.params, 100, 75, curve));
-  EXPECT_LT(curve[kCentre], 0.05f);
+  CostCurveSampler sampler;
+  ASSERT_TRUE(sampler.Prepare(s.params, 100, 75));
+  EXPECT_LT(sampler.At(kCentre), 0.05f);
   EXPECT_EQ(ClassifyPixel(s.params, 100, 75, DefaultReliabilityParams(0)), kReliable);
   EXPECT_EQ(ClassifyPixel(s.params, 60, 50, DefaultReliabilityParams(3)), kReliable);
 }

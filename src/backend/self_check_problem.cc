@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <utility>
 
+#include "base/value_noise.h"
 #include "core/math/camera.h"
 #include "core/math/homography.h"
 #include "core/math/rng.h"
@@ -49,24 +50,10 @@ core::Camera MakeCamera(const float centre[3]) {
   return cam;
 }
 
-// A uniform value in [0, 1) at every lattice point, bilinear in between.
-float ValueNoise(float x, float y) {
-  const float fx = std::floor(x), fy = std::floor(y);
-  const int i = static_cast<int>(fx), j = static_cast<int>(fy);
-  auto lattice = [](int a, int b) {
-    const uint64_t cell =
-        (static_cast<uint64_t>(static_cast<uint32_t>(a)) << 32) ^ static_cast<uint32_t>(b);
-    return static_cast<float>(core::Mix64(cell ^ kTextureSeed) >> 40) / 16777216.0f;  // 24 bits
-  };
-  const float u = x - fx, v = y - fy;
-  const float top = lattice(i, j) + u * (lattice(i + 1, j) - lattice(i, j));
-  const float bottom = lattice(i, j + 1) + u * (lattice(i + 1, j + 1) - lattice(i, j + 1));
-  return top + v * (bottom - top);
-}
-
 float Texture(const core::Vec3& X) {
   const float x = X.x * kCellsPerMetre, y = X.y * kCellsPerMetre;
-  return 0.7f * ValueNoise(x, y) + 0.3f * ValueNoise(0.3f * x + 7.0f, 0.3f * y);
+  return 0.7f * ValueNoise(x, y, kTextureSeed) +
+         0.3f * ValueNoise(0.3f * x + 7.0f, 0.3f * y, kTextureSeed);
 }
 
 // Where the ray of pixel (col, row) of `cam` meets the plane (world).

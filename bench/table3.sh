@@ -10,7 +10,7 @@
 #   bench/table3.sh [--rows ID,ID,...] [--drop_unknown] <workspace> [msp_stereo options...]
 #
 # The options after the workspace go to every row, e.g. a quick look:
-#   bench/table3.sh WS --PatchMatchStereo.max_image_size 320 --MspStereo.num_threads 1
+#   bench/table3.sh WS --PatchMatchStereo.max_image_size 320 --PatchMatchStereo.num_threads 1
 # --rows runs the named rows only (ids below), in the table's order.
 # --drop_unknown leaves out of each row the options this msp_stereo does not
 # accept, and names them under the table: for a binary built before a part

@@ -67,10 +67,10 @@ void WarnAboutIgnoredOptions(const StereoCommandOptions& options) {
   }
   if (p.num_iterations != defaults.num_iterations) {
     std::cout << "WARNING: " << MSP_OPTION_FLAG(p, num_iterations)
-              << " is ignored (the APD schedule runs " << MSP_OPTION_FLAG(m, iterations)
+              << " is ignored (the APD schedule runs " << MSP_OPTION_FLAG(m, advanced_iterations)
               << " red-black iterations per pass: one photometric pass and, with "
               << MSP_OPTION_FLAG(p, geom_consistency) << ", "
-              << MSP_OPTION_FLAG(m, geometric_passes) << " geometric passes per round)\n";
+              << MSP_OPTION_FLAG(m, advanced_geometric_passes) << " geometric passes per round)\n";
   }
   if (p.ncc_sigma != defaults.ncc_sigma ||
       p.incident_angle_sigma != defaults.incident_angle_sigma) {
@@ -156,8 +156,10 @@ void PrintWhatIsDone(const Workspace& workspace, const MapWriter& writer) {
 
 int Run(int argc, char** argv) {
   StereoCommandOptions options;
-  if (ParseStereoCommand(argc, argv, &options) == ParseStatus::kHelp) {
-    std::cout << StereoCommandUsage();
+  const ParseStatus status = ParseStereoCommand(argc, argv, &options);
+  if (status != ParseStatus::kRun) {
+    std::cout << StereoCommandUsage(status == ParseStatus::kHelpAll ? UsageScope::kAllOptions
+                                                                    : UsageScope::kCommonOptions);
     return 0;
   }
   CheckStereoCommandOptions(options);

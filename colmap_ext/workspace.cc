@@ -280,7 +280,7 @@ void LoadPriorMaskLayers(const StereoCommandOptions& options, Workspace* ws) {
   }
   std::vector<ImageLabelLayers> layers =
       LoadMaskLayers(ResolveMaskPath(options.msp.mask_path, ws->path), images,
-                     options.msp.num_mask_levels, &std::cout);
+                     options.msp.advanced_num_mask_levels, &std::cout);
   for (size_t i = 0; i < refs.size(); ++i) ws->views[refs[i]].mask_layers = std::move(layers[i]);
 }
 

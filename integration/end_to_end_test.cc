@@ -77,7 +77,7 @@ const std::string kColmap = std::string(MSP_BIN_DIR) + "/colmap";
 TEST_F(EndToEndTest, StereoFusionEvaluateThenResume) {
   ASSERT_TRUE(fs::exists(test::RealColmap()))
       << "colmap is not installed at " << test::RealColmap();
-  ASSERT_EQ(RunLogged(kColmap + " msp_stereo --workspace_path " + ws_ + " --MspStereo.seed 1",
+  ASSERT_EQ(RunLogged(kColmap + " msp_stereo --workspace_path " + ws_ + " --random_seed 1",
                       ws_ + "/stereo.log"),
             0)
       << test::ReadRaw(ws_ + "/stereo.log");

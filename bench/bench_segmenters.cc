@@ -38,7 +38,7 @@ namespace {
 
 constexpr float kDepthEdgeJump = 0.03f;   // as bench/edge_accuracy.py
 constexpr float kCreaseCosine = 0.9397f;  // cos 20 degrees
-constexpr int kNumColourLevels = 3;       // --MspStereo.num_mask_levels default
+constexpr int kNumColourLevels = 3;       // --MspStereo.advanced_num_mask_levels default
 constexpr Segmenter kSegmenters[] = {Segmenter::kOpenCv, Segmenter::kEmbedded};
 
 double ThreadCpuSeconds() {

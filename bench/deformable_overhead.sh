@@ -43,7 +43,7 @@ run() {
 
 # One core kept busy with conventional runs until killed.
 keep_busy() {
-  while :; do run filler --MspStereo.deformable false --MspStereo.num_threads 1 "$@" || true; done
+  while :; do run filler --MspStereo.deformable false --PatchMatchStereo.num_threads 1 "$@" || true; done
 }
 
 # Background jobs in process groups of their own: a filler dies with its runs.
@@ -51,9 +51,9 @@ set -m
 echo "pair  default: wall s  user s  peak MiB | conventional: wall s  user s  peak MiB | ratio wall  user"
 for ((k = 1; k <= pairs; ++k)); do
   if [ "$concurrent" = 1 ]; then
-    run default --MspStereo.deformable true --MspStereo.num_threads 1 "$@" &
+    run default --MspStereo.deformable true --PatchMatchStereo.num_threads 1 "$@" &
     default_pid=$!
-    run conventional --MspStereo.deformable false --MspStereo.num_threads 1 "$@" &
+    run conventional --MspStereo.deformable false --PatchMatchStereo.num_threads 1 "$@" &
     conventional_pid=$!
     wait -n "$default_pid" "$conventional_pid"
     keep_busy "$@" > /dev/null 2>&1 &

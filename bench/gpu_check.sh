@@ -67,7 +67,7 @@ for backend in cpu cuda; do
   nvidia-smi --query-gpu=memory.used --format=csv,noheader,nounits -lms 200 >"$smi_log" &
   smi=$!
   start=$(date +%s.%N)
-  "$bin/msp_stereo" --workspace_path "$ws" --MspStereo.backend "$backend" --MspStereo.seed 0 \
+  "$bin/msp_stereo" --workspace_path "$ws" --MspStereo.backend "$backend" --random_seed 0 \
     >"$out/$backend.log" 2>&1 || { kill "$smi"; fail "msp_stereo --MspStereo.backend $backend (see $out/$backend.log)"; }
   end=$(date +%s.%N)
   kill "$smi"; wait "$smi" 2>/dev/null || true

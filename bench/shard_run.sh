@@ -34,12 +34,12 @@ run() {
 
 now_ms() { echo $(($(date +%s%N) / 1000000)); }
 t0=$(now_ms)
-run one one --MspStereo.num_threads "$shards" "$@"
+run one one --PatchMatchStereo.num_threads "$shards" "$@"
 one_wall=$(awk -v ms=$(($(now_ms) - t0)) 'BEGIN { print ms / 1000 }')
 t0=$(now_ms)
 pids=()
 for ((k = 0; k < shards; ++k)); do
-  run sharded "shard$k" --MspStereo.num_threads 1 --MspStereo.shard "$k/$shards" "$@" &
+  run sharded "shard$k" --PatchMatchStereo.num_threads 1 --MspStereo.shard "$k/$shards" "$@" &
   pids+=($!)
 done
 for pid in "${pids[@]}"; do wait "$pid"; done

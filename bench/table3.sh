@@ -11,9 +11,9 @@
 #                   [msp_stereo options...]
 #
 # The options after the workspace go to every row, e.g. a quick look:
-#   bench/table3.sh WS --PatchMatchStereo.max_image_size 320 --MspStereo.num_threads 1
+#   bench/table3.sh WS --PatchMatchStereo.max_image_size 320 --PatchMatchStereo.num_threads 1
 # --rows runs the named rows only (ids below), in the table's order.
-# --seeds runs every row once per seed (--MspStereo.seed S) and prints the
+# --seeds runs every row once per seed (--random_seed S) and prints the
 # means: the figures of one seed swing by a point or two.
 # --drop_unknown leaves out of each row the options this msp_stereo does not
 # accept, and names them under the table: for a binary built before a part
@@ -98,7 +98,7 @@ for plan in "${plans[@]}"; do
   runs=()
   for seed in ${seeds:-default}; do
     seed_option=()
-    [ "$seed" = default ] || seed_option=(--MspStereo.seed "$seed")
+    [ "$seed" = default ] || seed_option=(--random_seed "$seed")
     run_row ${common[@]+"${common[@]}"} ${options[@]+"${options[@]}"} ${seed_option[@]+"${seed_option[@]}"}
     cp "$scratch/eval.json" "$scratch/eval_$seed.json"
     runs+=("$scratch/eval_$seed.json" "$(cat "$scratch/time")")

@@ -21,9 +21,9 @@ rows=(
   "default|"
   "segment planes off|--MspStereo.segment_planes false"
   "textureless filter by NCC (as COLMAP)|--MspStereo.filter_textureless_by_geometry false"
-  "nearest-neighbour upsampling|--MspStereo.joint_bilateral_upsampling false"
-  "finest round deformable, 3 iterations|--MspStereo.deformable true --MspStereo.finest_deformable true --MspStereo.finest_iterations 3"
-  "one round (no pyramid)|--MspStereo.coarsest_image_size 100000"
+  "nearest-neighbour upsampling|--MspStereo.advanced_joint_bilateral_upsampling false"
+  "finest round deformable, 3 iterations|--MspStereo.deformable true --MspStereo.advanced_finest_deformable true --MspStereo.advanced_finest_iterations 3"
+  "one round (no pyramid)|--MspStereo.advanced_coarsest_image_size 100000"
 )
 
 all_options=("${common[@]}")

@@ -165,7 +165,7 @@ std::vector<ImageLabelLayers> LoadMaskLayers(const std::string& mask_dir,
       *log << "Segmentation prior: " << levels << " mask levels from " << mask_dir << " for "
            << with_files << " images";
       if (levels != expected_levels) {
-        *log << " (" << MSP_OPTION_FLAG_OF(MspStereoOptions, num_mask_levels) << " is "
+        *log << " (" << MSP_OPTION_FLAG_OF(MspStereoOptions, advanced_num_mask_levels) << " is "
              << expected_levels << "; the files decide)";
       }
       *log << "\n";

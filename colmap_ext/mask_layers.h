@@ -43,7 +43,7 @@ LabelLayers ReadMaskLayers(const std::string& mask_dir, const MaskImage& image, 
 // marked kEmbeddedSegmenter (layers left empty). Every image with layers must
 // have the same number of levels (InputError otherwise). Writes one summary
 // line per source to `log` (may be null), naming the images that fall back;
-// `expected_levels` (--MspStereo.num_mask_levels) is only compared and noted.
+// `expected_levels` (--MspStereo.advanced_num_mask_levels) is only compared and noted.
 std::vector<ImageLabelLayers> LoadMaskLayers(const std::string& mask_dir,
                                              const std::vector<MaskImage>& images,
                                              int expected_levels, std::ostream* log);

@@ -15,8 +15,10 @@ namespace {
 
 int Run(int argc, char** argv) {
   StereoCommandOptions options;
-  if (ParseStereoCommand(argc, argv, &options) == ParseStatus::kHelp) {
-    std::cout << StereoCommandUsage();
+  const ParseStatus status = ParseStereoCommand(argc, argv, &options);
+  if (status != ParseStatus::kRun) {
+    std::cout << StereoCommandUsage(status == ParseStatus::kHelpAll ? UsageScope::kAllOptions
+                                                                    : UsageScope::kCommonOptions);
     return 0;
   }
   InstallStopHandlers();

@@ -33,7 +33,6 @@ bool LeavesResultsAlone(const std::string& name) {
       MSP_OPTION_NAME_OF(PatchMatchStereoOptions, gpu_index),
       MSP_OPTION_NAME_OF(PatchMatchStereoOptions, cache_size),
       MSP_OPTION_NAME_OF(PatchMatchStereoOptions, num_threads),
-      MSP_OPTION_NAME_OF(MspStereoOptions, num_threads),
       MSP_OPTION_NAME_OF(MspStereoOptions, shard),
       MSP_OPTION_NAME_OF(MspStereoOptions, image_list),
       MSP_OPTION_NAME_OF(MspStereoOptions, shard_timeout),

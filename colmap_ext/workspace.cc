@@ -282,7 +282,7 @@ void LoadPriorMaskLayers(const StereoCommandOptions& options, Workspace* ws) {
   std::ostringstream mask_log;
   std::vector<ImageLabelLayers> layers =
       LoadMaskLayers(ResolveMaskPath(options.msp.mask_path, ws->path), images,
-                     options.msp.num_mask_levels, &mask_log);
+                     options.msp.advanced_num_mask_levels, &mask_log);
   LogText(kLogAlways, mask_log.str());
   for (size_t i = 0; i < refs.size(); ++i) ws->views[refs[i]].mask_layers = std::move(layers[i]);
 }

@@ -87,7 +87,7 @@ class EndToEndTest : public testing::Test {
   // msp_stereo with the seed, checks of the maps, fusion, evaluation.
   static eval::EvaluationResult RunAndEvaluate(int seed) {
     const std::string ws = Workspace(seed);
-    EXPECT_EQ(RunLogged(kColmap + " msp_stereo --workspace_path " + ws + " --MspStereo.seed " +
+    EXPECT_EQ(RunLogged(kColmap + " msp_stereo --workspace_path " + ws + " --random_seed " +
                             std::to_string(seed),
                         ws + "/stereo.log"),
               0)

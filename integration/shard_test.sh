@@ -12,7 +12,7 @@ set -eu
 
 # The scene of the issue (6 views, two coarse-to-fine rounds, 8 passes).
 SCENE_OPTIONS="--width 128 --height 96 --num_cameras 6 --seed 5"
-STEREO_OPTIONS="--MspStereo.num_threads 1 --MspStereo.seed 7"
+STEREO_OPTIONS="--PatchMatchStereo.num_threads 1 --random_seed 7"
 
 reference "$TMP/ref"
 echo "one process: $ref_ms ms"

@@ -1,7 +1,9 @@
 #include "options/command_line_common.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 
 #include "options/option_parser.h"
 
@@ -37,6 +39,69 @@ std::string ValueText(double value) {
 
 void AddHelpOption(po::options_description* description) {
   description->add_options()("help,h", "Print this help and exit.");
+}
+
+namespace {
+
+// "  --name arg (=default)", the left column of an option's entry.
+std::string NameText(const po::option_description& option) {
+  std::string text = "  " + option.format_name();
+  const std::string parameter = option.format_parameter();
+  if (!parameter.empty()) text += " " + parameter;
+  return text;
+}
+
+// `text` wrapped into lines of at most `width` characters at spaces; a word
+// longer than `width` gets a line of its own.
+std::vector<std::string> WrapWords(const std::string& text, size_t width) {
+  std::vector<std::string> lines(1);
+  std::istringstream words(text);
+  std::string word;
+  while (words >> word) {
+    std::string& line = lines.back();
+    if (line.empty()) {
+      line = word;
+    } else if (line.size() + 1 + word.size() <= width) {
+      line += " " + word;
+    } else {
+      lines.push_back(word);
+    }
+  }
+  return lines;
+}
+
+}  // namespace
+
+std::string FormatOptionGroups(const std::vector<OptionGroupText>& groups) {
+  // The descriptions start two spaces after the longest name, but leave at
+  // least kHelpMinDescriptionLength columns; longer names go on a line of
+  // their own.
+  size_t column = 0;
+  for (const OptionGroupText& group : groups) {
+    for (const auto& option : group.options->options()) {
+      column = std::max(column, NameText(*option).size() + 2);
+    }
+  }
+  column = std::min<size_t>(column, kHelpLineLength - kHelpMinDescriptionLength);
+  std::ostringstream out;
+  for (size_t g = 0; g < groups.size(); ++g) {
+    if (g > 0) out << "\n";
+    if (!groups[g].caption.empty()) out << groups[g].caption << ":\n";
+    for (const auto& option : groups[g].options->options()) {
+      const std::string name = NameText(*option);
+      out << name;
+      size_t at = name.size();
+      if (at + 2 > column) {
+        out << "\n";
+        at = 0;
+      }
+      for (const std::string& line : WrapWords(option->description(), kHelpLineLength - column)) {
+        out << std::string(column - at, ' ') << line << "\n";
+        at = 0;
+      }
+    }
+  }
+  return out.str();
 }
 
 bool HasHelpFlag(int argc, const char* const argv[]) {

@@ -35,6 +35,18 @@ std::string DefaultText(const T& value) {
 // Lists -h / --help in a help text.
 void AddHelpOption(boost::program_options::options_description* description);
 
+// A usage text of option groups, laid out as boost's but never breaking a
+// word: boost breaks any word longer than half the description column, and
+// option names in help texts are (--MspStereo.advanced_geometric_passes).
+// Each group is "<caption>:" (no line when the caption is empty), then one
+// entry per option: its name, value and default, then its description,
+// wrapped at kHelpLineLength from a column shared by every group.
+struct OptionGroupText {
+  std::string caption;
+  const boost::program_options::options_description* options;
+};
+std::string FormatOptionGroups(const std::vector<OptionGroupText>& groups);
+
 // True when -h or --help is among the arguments (argv[0] is the program
 // name). Help wins over everything else, unknown options next to it included.
 bool HasHelpFlag(int argc, const char* const argv[]);

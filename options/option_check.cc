@@ -118,53 +118,53 @@ void CheckPatchMatchStereoOptions(const PatchMatchStereoOptions& o) {
 
 void CheckMspStereoOptions(const MspStereoOptions& o) {
   MSP_CHECK_ONE_OF(o, backend, "auto", "cpu", "cuda");
-  MSP_CHECK_NON_NEGATIVE(o, seed);
   if (!o.shard.empty()) ParseShardSpec(o.shard);
   if (!o.shard.empty() && !o.image_list.empty()) {
     Fail(MSP_OPTION_NAME(o, image_list), "`" + o.image_list + "`",
          "\"\" with " + MSP_OPTION_FLAG(o, shard) + " (a process takes a shard or a list)");
   }
   MSP_CHECK_POSITIVE(o, shard_timeout);
-  MSP_CHECK_RANGE(o, coarsest_image_size, kMinCoarsestImageSize, 1 << 20, Interval::kClosed,
-                  " (smaller images have too few pixels to match)");
-  MSP_CHECK_RANGE(o, iterations, 1, 3);
-  MSP_CHECK_NON_NEGATIVE(o, deformable_max_image_size);
-  MSP_CHECK_RANGE(o, finest_iterations, 1, 3);
+  MSP_CHECK_RANGE(o, advanced_coarsest_image_size, kMinCoarsestImageSize, 1 << 20,
+                  Interval::kClosed, " (smaller images have too few pixels to match)");
+  MSP_CHECK_RANGE(o, advanced_iterations, 1, 3);
+  MSP_CHECK_NON_NEGATIVE(o, advanced_deformable_max_image_size);
+  MSP_CHECK_RANGE(o, advanced_finest_iterations, 1, 3);
   MSP_CHECK_RANGE(o, black_level, 0.0, 1.0);
-  MSP_CHECK_RANGE(o, finest_refine_radius, 1, 5);  // 5 = core::kLocalRefineRadius
-  MSP_CHECK_RANGE(o, geometric_passes, 1, 3);  // 3 = kNumGeometricPasses, the most a round has
-  MSP_CHECK_RANGE(o, finest_geometric_passes, 1, 3);
+  MSP_CHECK_RANGE(o, advanced_finest_refine_radius, 1, 5);  // 5 = core::kLocalRefineRadius
+  MSP_CHECK_RANGE(o, advanced_geometric_passes, 1,
+                  3);  // 3 = kNumGeometricPasses, the most a round has
+  MSP_CHECK_RANGE(o, advanced_finest_geometric_passes, 1, 3);
   MSP_CHECK_RANGE(o, window_step, 1, 2);
-  MSP_CHECK_RANGE(o, reliable_max_cost, 0.0, 2.0);
-  MSP_CHECK_RANGE(o, reliable_single_cost, 0.0, 2.0);
-  MSP_CHECK_RANGE(o, reliable_min_spread, 0.0, 2.0);
-  MSP_CHECK_RANGE(o, anchor_max_distance, core::kFirstRayRadius, 1 << 16, Interval::kClosed,
-                  " (the first ray sample lies 2 px from the pixel)");
-  MSP_CHECK_RANGE(o, equidistribution_iterations, 1, core::kMaxEquidistributionIterations);
-  MSP_CHECK_RANGE(o, num_mask_levels, 1, core::kMaxLabelLayers, Interval::kClosed,
+  MSP_CHECK_RANGE(o, advanced_reliable_max_cost, 0.0, 2.0);
+  MSP_CHECK_RANGE(o, advanced_reliable_single_cost, 0.0, 2.0);
+  MSP_CHECK_RANGE(o, advanced_reliable_min_spread, 0.0, 2.0);
+  MSP_CHECK_RANGE(o, advanced_anchor_max_distance, core::kFirstRayRadius, 1 << 16,
+                  Interval::kClosed, " (the first ray sample lies 2 px from the pixel)");
+  MSP_CHECK_RANGE(o, advanced_equidistribution_iterations, 1, core::kMaxEquidistributionIterations);
+  MSP_CHECK_RANGE(o, advanced_num_mask_levels, 1, core::kMaxLabelLayers, Interval::kClosed,
                   " (best-layer sets are 32-bit sets, kMaxLabelLayers)");
   if (o.geometry_layers) {
-    MSP_CHECK_RANGE(
-        o, num_mask_levels, 1, core::kMaxLabelLayers - core::kNumGeometryLayers, Interval::kClosed,
-        " with " + MSP_OPTION_FLAG(o, geometry_layers) + ", which adds " +
-            std::to_string(core::kNumGeometryLayers) +
-            " (kMaxLabelLayers = " + std::to_string(core::kMaxLabelLayers) + " in all)");
+    MSP_CHECK_RANGE(o, advanced_num_mask_levels, 1,
+                    core::kMaxLabelLayers - core::kNumGeometryLayers, Interval::kClosed,
+                    " with " + MSP_OPTION_FLAG(o, geometry_layers) + ", which adds " +
+                        std::to_string(core::kNumGeometryLayers) + " (kMaxLabelLayers = " +
+                        std::to_string(core::kMaxLabelLayers) + " in all)");
   }
   MSP_CHECK_ONE_OF(o, segmenter, "opencv", "embedded");
-  MSP_CHECK_POSITIVE(o, crf_alpha);
-  MSP_CHECK_POSITIVE(o, crf_beta);
-  MSP_CHECK_RANGE(o, crf_unary_confidence, 0.0, 1.0, Interval::kOpen);
-  MSP_CHECK_POSITIVE(o, crf_iterations);
-  MSP_CHECK_RANGE(o, dbscan_eta, 0, core::kMaxKeptAnchors - 1);
-  MSP_CHECK_NON_NEGATIVE(o, dbscan_gamma);
-  MSP_CHECK_RANGE(o, sampling_solutions, 1, core::kMaxSamplingSolutions);
-  MSP_CHECK_RANGE(o, disparity_samples, 1, core::kMaxDisparitySamples);
-  if (o.disparity_samples % 2 == 0) {
-    Fail(MSP_OPTION_NAME(o, disparity_samples), ToText(o.disparity_samples),
+  MSP_CHECK_POSITIVE(o, advanced_crf_alpha);
+  MSP_CHECK_POSITIVE(o, advanced_crf_beta);
+  MSP_CHECK_RANGE(o, advanced_crf_unary_confidence, 0.0, 1.0, Interval::kOpen);
+  MSP_CHECK_POSITIVE(o, advanced_crf_iterations);
+  MSP_CHECK_RANGE(o, advanced_dbscan_eta, 0, core::kMaxKeptAnchors - 1);
+  MSP_CHECK_NON_NEGATIVE(o, advanced_dbscan_gamma);
+  MSP_CHECK_RANGE(o, advanced_sampling_solutions, 1, core::kMaxSamplingSolutions);
+  MSP_CHECK_RANGE(o, advanced_disparity_samples, 1, core::kMaxDisparitySamples);
+  if (o.advanced_disparity_samples % 2 == 0) {
+    Fail(MSP_OPTION_NAME(o, advanced_disparity_samples), ToText(o.advanced_disparity_samples),
          "odd (the profile is centred on the current disparity)");
   }
-  MSP_CHECK_POSITIVE(o, disparity_step);
-  MSP_CHECK_NON_NEGATIVE(o, variance_weight);
+  MSP_CHECK_POSITIVE(o, advanced_disparity_step);
+  MSP_CHECK_NON_NEGATIVE(o, advanced_variance_weight);
 }
 
 void CheckStereoCommandOptions(const StereoCommandOptions& o) {
@@ -172,6 +172,7 @@ void CheckStereoCommandOptions(const StereoCommandOptions& o) {
     throw OptionError("missing required option " + MSP_OPTION_FLAG(o, workspace_path));
   }
   MSP_CHECK_ONE_OF(o, workspace_format, "COLMAP", "PMVS");
+  MSP_CHECK_NON_NEGATIVE(o, random_seed);
   CheckPatchMatchStereoOptions(o.patch_match);
   CheckMspStereoOptions(o.msp);
 }

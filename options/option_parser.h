@@ -30,37 +30,63 @@ class OptionError : public std::runtime_error {
 };
 
 enum class ParseStatus {
-  kRun,   // options are filled in; run the command
-  kHelp,  // -h / --help was given; print StereoCommandUsage() and exit 0
+  kRun,      // options are filled in; run the command
+  kHelp,     // -h / --help was given; print StereoCommandUsage() and exit 0
+  kHelpAll,  // --help_all was given; print StereoCommandUsage(kAllOptions) and exit 0
 };
+
+// Which options a usage text lists: the common ones (--help), or also the
+// advanced ones (--MspStereo.advanced_*) and the COLMAP options that are
+// accepted and ignored (--help_all).
+enum class UsageScope { kCommonOptions, kAllOptions };
 
 // Parses the arguments of `msp_stereo` (argv[0] is the program name) into
 // `options`, which must hold the defaults on entry. Throws OptionError for an
-// unknown option, a malformed value, an unreadable ini file or a missing
-// --workspace_path. Value ranges are not checked here: see option_check.h.
+// unknown option, an option of an earlier version that was renamed (the
+// message names the new one), a malformed value, an unreadable ini file or a
+// missing --workspace_path. --random_seed and --PatchMatchStereo.num_threads
+// are also copied into options->msp (seed, num_threads), which the back-ends
+// read. Value ranges are not checked here: see option_check.h.
 // --workspace_format is normalised to upper case (COLMAP compares it
 // case-insensitively).
 ParseStatus ParseStereoCommand(int argc, const char* const argv[], StereoCommandOptions* options);
 
+// Copies the options COLMAP gives at the command's level into the fields the
+// back-ends read: --random_seed into msp.seed, --PatchMatchStereo.num_threads
+// into msp.num_threads. ParseStereoCommand calls it; so does any other way of
+// filling StereoCommandOptions (the Python module).
+void ApplySharedOptions(StereoCommandOptions* options);
+
+// Usage text listing the options of `scope` with their defaults and help
+// texts, in usage order; the one description of each option (the README's
+// option table is generated from the kAllOptions text).
+std::string StereoCommandUsage(UsageScope scope = UsageScope::kCommonOptions);
+
+// Where an option is listed: --help shows the common options, --help_all
+// also the advanced ones (--MspStereo.advanced_*) and the COLMAP options that
+// are accepted and ignored.
+enum class OptionGroup { kCommon, kAdvanced, kIgnored };
+
 // Receives the options of a struct one field at a time: the option's full
-// name (MSP_OPTION_NAME, e.g. "PatchMatchStereo.window_radius"), the field and
-// its help text. The parser's table is one; the Python module's attributes
-// are another, so every option is listed once.
+// name (MSP_OPTION_NAME, e.g. "PatchMatchStereo.window_radius"), the field,
+// its help text and its group. The parser's table is one; the Python
+// module's attributes are another, so every option is listed once.
 class OptionVisitor {
  public:
   virtual ~OptionVisitor() = default;
-  virtual void Visit(const std::string& name, int* field, const std::string& help) = 0;
-  virtual void Visit(const std::string& name, double* field, const std::string& help) = 0;
-  virtual void Visit(const std::string& name, bool* field, const std::string& help) = 0;
-  virtual void Visit(const std::string& name, std::string* field, const std::string& help) = 0;
+  virtual void Visit(const std::string& name, int* field, const std::string& help,
+                     OptionGroup group) = 0;
+  virtual void Visit(const std::string& name, double* field, const std::string& help,
+                     OptionGroup group) = 0;
+  virtual void Visit(const std::string& name, bool* field, const std::string& help,
+                     OptionGroup group) = 0;
+  virtual void Visit(const std::string& name, std::string* field, const std::string& help,
+                     OptionGroup group) = 0;
 };
 
 // Every field of the struct with an option, in usage order.
 void VisitPatchMatchStereoOptions(PatchMatchStereoOptions* options, OptionVisitor* visitor);
 void VisitMspStereoOptions(MspStereoOptions* options, OptionVisitor* visitor);
-
-// Usage text listing every option with its default and help text.
-std::string StereoCommandUsage();
 
 // The full names of every option the command accepts, without "--"
 // (e.g. "PatchMatchStereo.window_radius"), in usage order.

@@ -51,7 +51,8 @@ struct PatchMatchStereoOptions {
   double min_triangulation_angle = 1.0;
   // accepted, ignored: spread (on 1 - cos) of the incident-angle likelihood, as ncc_sigma.
   double incident_angle_sigma = 0.9;
-  // accepted, ignored: COLMAP's iteration count; each pass runs 3 red-black iterations.
+  // accepted, ignored: COLMAP's iteration count; the red-black iterations per pass are
+  // MspStereoOptions::advanced_iterations and advanced_finest_iterations.
   int num_iterations = 5;
   // 3 geometric passes per round after the photometric one; writes *.geometric.bin (else only
   // *.photometric.bin).
@@ -76,20 +77,21 @@ struct PatchMatchStereoOptions {
   bool allow_missing_files = false;
   // accepted, ignored (with a warning): no consistency graphs are written.
   bool write_consistency_graph = false;
-  // accepted, ignored: COLMAP >= 3.10's I/O threads; workers are MspStereoOptions::num_threads.
+  // Worker threads of the CPU back-end and of the CUDA back-end's CPU steps; <= 0 = all cores.
+  // COLMAP >= 3.10's thread count (its -1 = all cores, too).
   int num_threads = -1;
 };
 
-// This project's own options (--MspStereo.*).
+// This project's own options (--MspStereo.*): first those a user sets, then
+// the advanced ones (--MspStereo.advanced_*, listed by --help_all only): the
+// method's numeric internals and its coarse-to-fine schedule, whose defaults
+// are the paper's or measured (BENCHMARKS.md) and which ablations and
+// benchmarks vary. The help texts (option_parser.cc) say what each does.
 struct MspStereoOptions {
   static constexpr char kSection[] = "MspStereo";
 
   // "auto" (cuda when a CUDA device is present, else cpu), "cpu" or "cuda".
   std::string backend = "auto";
-  // Seed (>= 0) of the counter-based random generator; a run is a pure function of it.
-  int seed = 0;
-  // Worker threads of the CPU back-end; <= 0 = all cores.
-  int num_threads = -1;
   // "K/N": this process computes the reference images of problems K, K+N, K+2N, ... of N
   // processes sharing the workspace, which exchange each pass's states through
   // stereo/msp_shared (docs/cluster.md); "" = every image in this process.
@@ -104,29 +106,6 @@ struct MspStereoOptions {
   // Pixels whose whole matching window is darker than this (grey, 0..1 of full scale) have
   // nothing to match: no plane, never scored, empty in the maps; 0 = every pixel is matched.
   double black_level = 0.03;
-  // Coarse-to-fine rounds halve the images until the larger side is at most this (pixels).
-  int coarsest_image_size = 80;
-  // Red-black iterations per pass in every round but the finest of several (APD: 3), and in the
-  // finest round of a run with several rounds.
-  int iterations = 3;
-  int finest_iterations = 1;
-  // Disparity pixels each side of the local refinement's sweep in the finest round of several
-  // (1..5; the coarser rounds sweep 5).
-  int finest_refine_radius = 5;
-  // Geometric passes per round after the photometric one (1..3; APD: 3), in the coarser rounds
-  // and in the finest round of a run with several rounds.
-  int geometric_passes = 3;
-  int finest_geometric_passes = 3;
-  // Rounds whose images' larger side exceeds this many pixels run the conventional sweeps, not
-  // the deformable step; 0 = no limit.
-  int deformable_max_image_size = 80;
-  // The finest round of a run with several rounds runs the deformable step; false = conventional.
-  bool finest_deformable = false;
-  // In the finest round of a run with several rounds, propagation candidates are scored only on
-  // the views of the pixel's last selection (the views that carry its weight); false = on all.
-  bool weighted_views_only = true;
-  // Carry planes up a round by an image-guided joint-bilateral vote (ACMM); false = nearest.
-  bool joint_bilateral_upsampling = true;
   // Pixel step between window samples, 1 or 2 (paper: 2); replaces --PatchMatchStereo.window_step.
   int window_step = 2;
   // Bilateral NCC weights (COLMAP's sigma_spatial, sigma_color) instead of APD-MVS's uniform ones.
@@ -153,28 +132,16 @@ struct MspStereoOptions {
   bool depth_range_from_sources = false;
   // The final filter judges a weakly textured pixel by geometric agreement alone (no NCC test).
   bool filter_textureless_by_geometry = true;
-  // Cost (1 - NCC, in [0, 2]) above which the lowest cost-curve minimum is unreliable (APD: 0.5).
-  double reliable_max_cost = 0.5;
-  // Cost (1 - NCC) at or below which a single curve minimum is reliable (APD: 0.15).
-  double reliable_single_cost = 0.15;
-  // Cost (1 - NCC) every other minimum must lie above the lowest to be reliable (APD: 0.2).
-  double reliable_min_spread = 0.2;
-  // Anchor search range in pixels of the current round (APD: 100).
-  int anchor_max_distance = 100;
   // Adaptive equidistribution (eq. 7, docs/method.md section 5): re-cut each unreliable pixel's
   // 8 anchor sectors so that each faces about as many reliable pixels; false = fixed 45-degree
   // sectors ("w/o Eqd.").
   bool equidistribution = true;
-  // Re-cuts per pixel (1..3); each casts up to 8 more boundary rays.
-  int equidistribution_iterations = 2;
   // Segmentation prior (docs/method.md section 4): anchors never cross its edges; "w/o Mul.".
   bool segmentation_prior = true;
   // Aggregate layers per region by best anchor subsets (eqs. 4-5); false = union ("w/o Agr.").
   bool edge_aggregation = true;
   // Refine the aggregated edges with the colour/depth CRF (eq. 6); false = "w/o Ref.".
   bool edge_refinement = true;
-  // Label layers the embedded segmenter builds for an image without mask files (paper: 3).
-  int num_mask_levels = 3;
   // Add label layers segmented from the current depth and normal maps to the embedded colour
   // layers (never to mask files), so the prior sees depth edges between alike colours; false =
   // colour layers only.
@@ -185,38 +152,85 @@ struct MspStereoOptions {
   // Write pictures to <workspace>/stereo/prior_previews/: <image>.{depth,normal,error}.png of the
   // final maps (error with a ground_truth/ folder), <image>.png of the prior's edges.
   bool write_previews = false;
-  // CRF (eq. 6) depth bandwidth alpha, as a fraction of the depth range.
-  double crf_alpha = 0.02;
-  // CRF (eq. 6) colour bandwidth beta on |I_p . I_q - 1| of normalised RGB (unitless).
-  double crf_beta = 0.05;
-  // CRF probability (in (0, 1)) that the unary gives the aggregated label.
-  double crf_unary_confidence = 0.7;
-  // CRF mean-field iterations (count).
-  int crf_iterations = 5;
   // Disassemble-clustering (docs/method.md section 6): every RANSAC inlier is an anchor, DBSCAN
   // clusters of them are the deformable patch's sub-patch groups; false = APD's 8 anchors.
   bool disassemble_clustering = true;
-  // DBSCAN eta: neighbours (the point not counted) within dbscan_gamma that make a core anchor.
-  int dbscan_eta = 2;
-  // DBSCAN gamma in pixels of the current round; 0 = max(3, 0.25 x median anchor distance to p).
-  double dbscan_gamma = 0.0;
   // Disparity-sampling synergistic 3D optimization (docs/method.md section 7): the sampling pixels
   // of the deformable patch's sub-patches at random, the best of several solutions by eq. 9.
   bool synergistic_optimization = true;
+
+  // --- Advanced: the coarse-to-fine schedule (docs/method.md section 1) ---
+  // Coarse-to-fine rounds halve the images until the larger side is at most this (pixels).
+  int advanced_coarsest_image_size = 80;
+  // Red-black iterations per pass in every round but the finest of several (APD: 3), and in the
+  // finest round of a run with several rounds.
+  int advanced_iterations = 3;
+  int advanced_finest_iterations = 1;
+  // Geometric passes per round after the photometric one (1..3; APD: 3), in the coarser rounds
+  // and in the finest round of a run with several rounds.
+  int advanced_geometric_passes = 3;
+  int advanced_finest_geometric_passes = 3;
+  // Disparity pixels each side of the local refinement's sweep in the finest round of several
+  // (1..5; the coarser rounds sweep 5).
+  int advanced_finest_refine_radius = 5;
+  // Rounds whose images' larger side exceeds this many pixels run the conventional sweeps, not
+  // the deformable step; 0 = no limit.
+  int advanced_deformable_max_image_size = 80;
+  // The finest round of a run with several rounds runs the deformable step; false = conventional.
+  bool advanced_finest_deformable = false;
+  // In the finest round of a run with several rounds, propagation candidates are scored only on
+  // the views of the pixel's last selection (the views that carry its weight); false = on all.
+  bool advanced_weighted_views_only = true;
+  // Carry planes up a round by an image-guided joint-bilateral vote (ACMM); false = nearest.
+  bool advanced_joint_bilateral_upsampling = true;
+
+  // --- Advanced: numeric internals of the deformable step (docs/method.md sections 3-7) ---
+  // Cost (1 - NCC, in [0, 2]) above which the lowest cost-curve minimum is unreliable (APD: 0.5).
+  double advanced_reliable_max_cost = 0.5;
+  // Cost (1 - NCC) at or below which a single curve minimum is reliable (APD: 0.15).
+  double advanced_reliable_single_cost = 0.15;
+  // Cost (1 - NCC) every other minimum must lie above the lowest to be reliable (APD: 0.2).
+  double advanced_reliable_min_spread = 0.2;
+  // Anchor search range in pixels of the current round (APD: 100).
+  int advanced_anchor_max_distance = 100;
+  // Re-cuts of the equidistribution per pixel (1..3); each casts up to 8 more boundary rays.
+  int advanced_equidistribution_iterations = 2;
+  // Label layers the embedded segmenter builds for an image without mask files (paper: 3).
+  int advanced_num_mask_levels = 3;
+  // CRF (eq. 6) depth bandwidth alpha, as a fraction of the depth range.
+  double advanced_crf_alpha = 0.02;
+  // CRF (eq. 6) colour bandwidth beta on |I_p . I_q - 1| of normalised RGB (unitless).
+  double advanced_crf_beta = 0.05;
+  // CRF probability (in (0, 1)) that the unary gives the aggregated label.
+  double advanced_crf_unary_confidence = 0.7;
+  // CRF mean-field iterations (count).
+  int advanced_crf_iterations = 5;
+  // DBSCAN eta: neighbours (the point not counted) within dbscan_gamma that make a core anchor.
+  int advanced_dbscan_eta = 2;
+  // DBSCAN gamma in pixels of the current round; 0 = max(3, 0.25 x median anchor distance to p).
+  double advanced_dbscan_gamma = 0.0;
   // J: sampling solutions drawn per optimization (the one in use competes with them).
-  int sampling_solutions = 6;
+  int advanced_sampling_solutions = 6;
   // The paper's iterative local search: in every iteration the solution in use competes with J
   // perturbations of itself (one sub-patch re-sampled each); false = J independent draws once per
   // pass that replace it.
-  bool sampling_local_search = true;
+  bool advanced_sampling_local_search = true;
   // mu: disparities of a cost profile (odd).
-  int disparity_samples = 5;
+  int advanced_disparity_samples = 5;
   // delta: step between the profile's disparities, in pixels of disparity.
-  double disparity_step = 1.0;
+  double advanced_disparity_step = 1.0;
   // omega: weight of eq. 9's variance term sum (c_i - c_bar)^-2; 0 = no variance term.
-  double variance_weight = 0.01;
+  double advanced_variance_weight = 0.01;
   // Eq. 9 with the sum of the profile's costs; false = the variance term alone.
-  bool profile_cost_term = true;
+  bool advanced_profile_cost_term = true;
+
+  // Not options: what the back-ends read of COLMAP's options, which the parser copies here
+  // (the option names are COLMAP's, each concept has one).
+  // The seed (>= 0) of the counter-based random generator, which a run is a pure function of:
+  // --random_seed.
+  int seed = 0;
+  // Worker threads of the CPU back-end; <= 0 = all cores: --PatchMatchStereo.num_threads.
+  int num_threads = -1;
 };
 
 // Everything the msp_stereo command needs; top-level options have no section.
@@ -233,7 +247,8 @@ struct StereoCommandOptions {
   std::string config_path;
   // Ini file with [PatchMatchStereo] / [MspStereo] sections; the command line overrides it.
   std::string project_path;
-  // COLMAP's global seed; used as MspStereoOptions::seed unless --MspStereo.seed is given.
+  // COLMAP's global seed (>= 0), the seed of the random numbers; the parser copies it into
+  // MspStereoOptions::seed, which the back-ends read.
   int random_seed = 0;
   // accepted, ignored: msp_stereo logs to stdout and reports errors on stderr.
   bool log_to_stderr = false;

@@ -24,12 +24,12 @@ std::string AttributeName(const std::string& option_name) {
 // The attributes of a struct and their help texts, in usage order.
 class FieldList : public OptionVisitor {
  public:
-  void Visit(const std::string& name, int*, const std::string& help) override { Add(name, help); }
-  void Visit(const std::string& name, double*, const std::string& help) override {
+  void Visit(const std::string& name, int*, const std::string& help, OptionGroup) override { Add(name, help); }
+  void Visit(const std::string& name, double*, const std::string& help, OptionGroup) override {
     Add(name, help);
   }
-  void Visit(const std::string& name, bool*, const std::string& help) override { Add(name, help); }
-  void Visit(const std::string& name, std::string*, const std::string& help) override {
+  void Visit(const std::string& name, bool*, const std::string& help, OptionGroup) override { Add(name, help); }
+  void Visit(const std::string& name, std::string*, const std::string& help, OptionGroup) override {
     Add(name, help);
   }
 
@@ -49,16 +49,16 @@ class FieldAccess : public OptionVisitor {
   FieldAccess(std::string attribute, py::handle new_value = py::handle())
       : attribute_(std::move(attribute)), new_value_(new_value) {}
 
-  void Visit(const std::string& name, int* field, const std::string&) override {
+  void Visit(const std::string& name, int* field, const std::string&, OptionGroup) override {
     Access(name, field, "an int");
   }
-  void Visit(const std::string& name, double* field, const std::string&) override {
+  void Visit(const std::string& name, double* field, const std::string&, OptionGroup) override {
     Access(name, field, "a float");
   }
-  void Visit(const std::string& name, bool* field, const std::string&) override {
+  void Visit(const std::string& name, bool* field, const std::string&, OptionGroup) override {
     Access(name, field, "a bool");
   }
-  void Visit(const std::string& name, std::string* field, const std::string&) override {
+  void Visit(const std::string& name, std::string* field, const std::string&, OptionGroup) override {
     Access(name, field, "a str");
   }
 

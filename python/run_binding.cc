@@ -16,6 +16,7 @@
 #include "base/progress.h"
 #include "base/stop_request.h"
 #include "colmap_ext/stereo_command.h"
+#include "options/option_parser.h"
 #include "options/stereo_options.h"
 #include "python/python_log.h"
 
@@ -71,7 +72,7 @@ void PatchMatchStereo(const std::filesystem::path& workspace_path,
                       const std::string& workspace_format, const std::string& pmvs_option_name,
                       const std::filesystem::path& config_path,
                       const std::optional<PatchMatchStereoOptions>& options,
-                      const std::optional<MspStereoOptions>& msp_options,
+                      const std::optional<MspStereoOptions>& msp_options, int random_seed,
                       const py::object& progress) {
   std::unique_lock<std::mutex> lock(run_mutex, std::try_to_lock);
   if (!lock.owns_lock()) {
@@ -89,6 +90,8 @@ void PatchMatchStereo(const std::filesystem::path& workspace_path,
   command.config_path = config_path.string();
   if (options) command.patch_match = *options;
   if (msp_options) command.msp = *msp_options;
+  command.random_seed = random_seed;
+  ApplySharedOptions(&command);
   // Every line goes to Python's logging, whose levels choose (PythonLog).
   command.log_level = kLogDetail;
 
@@ -114,7 +117,8 @@ void BindPatchMatchStereo(py::module_& module) {
   module.def("patch_match_stereo", &PatchMatchStereo, py::arg("workspace_path"),
              py::arg("workspace_format") = "COLMAP", py::arg("pmvs_option_name") = "option-all",
              py::arg("config_path") = "", py::arg("options") = py::none(),
-             py::arg("msp_options") = py::none(), py::kw_only(), py::arg("progress") = py::none(),
+             py::arg("msp_options") = py::none(), py::kw_only(), py::arg("random_seed") = 0,
+             py::arg("progress") = py::none(),
              R"(Dense stereo of a COLMAP workspace, as `msp_stereo --workspace_path ...` (and
 pycolmap.patch_match_stereo, whose parameters these are): writes
 stereo/{depth,normal}_maps/*.{photometric,geometric}.bin for COLMAP's
@@ -123,6 +127,8 @@ run resumes.
 
 options: PatchMatchOptions (--PatchMatchStereo.*), None = the defaults.
 msp_options: MspStereoOptions (--MspStereo.*), None = the defaults.
+random_seed: the seed of the random numbers (--random_seed); a run is a pure
+  function of it.
 progress: called after each image-pass as progress(done, total, seconds_left)
   (image-passes done and in all, the estimated seconds left or None).
 

@@ -71,7 +71,7 @@ for build in native scalar; do
   [ "$build" = scalar ] && dir=$scalar
   cp -r "$out/scene" "$out/$build"
   "$dir/bin/msp_stereo" --workspace_path "$out/$build" --PatchMatchStereo.max_image_size 160 \
-    --MspStereo.deformable true --MspStereo.seed 0 --MspStereo.backend cpu >"$out/$build.log" 2>&1 ||
+    --MspStereo.deformable true --random_seed 0 --MspStereo.backend cpu >"$out/$build.log" 2>&1 ||
     fail "msp_stereo of the $build build (see $out/$build.log)"
   "$native/bin/msp_evaluate" --workspace "$out/$build" --json "$out/$build.json" \
     >"$out/$build.evaluation.log" 2>&1 || fail "msp_evaluate of the $build run"

@@ -29,9 +29,9 @@ rows=(
   "equidistribution|+ adaptive equidistribution (eq. 7)|$METHOD $NO_CLU $NO_SYN"
   "clustering|+ disassemble-clustering|$METHOD $NO_SYN"
   "full|+ 3D optimization (eqs. 8-9) = MSP-MVS|$METHOD"
-  "novar|MSP-MVS w/o Var. (omega = 0)|$METHOD --MspStereo.variance_weight 0"
-  "nocost|MSP-MVS w/o Cst.|$METHOD --MspStereo.profile_cost_term false"
-  "mu3|MSP-MVS, mu = 3|$METHOD --MspStereo.disparity_samples 3"
+  "novar|MSP-MVS w/o Var. (omega = 0)|$METHOD --MspStereo.advanced_variance_weight 0"
+  "nocost|MSP-MVS w/o Cst.|$METHOD --MspStereo.advanced_profile_cost_term false"
+  "mu3|MSP-MVS, mu = 3|$METHOD --MspStereo.advanced_disparity_samples 3"
   "default|default options (conventional core, segment planes, open sky)|"
 )
 

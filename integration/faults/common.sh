@@ -11,7 +11,7 @@ trap 'chmod -R u+w "$TMP"; rm -rf "$TMP"' EXIT
 
 # One coarse-to-fine round of 3 images: 12 image-passes of a fraction of a second.
 SCENE_OPTIONS="--width 128 --height 96 --num_cameras 3 --seed 5"
-STEREO_OPTIONS="--MspStereo.num_threads 1 --MspStereo.seed 7 --MspStereo.coarsest_image_size 128"
+STEREO_OPTIONS="--PatchMatchStereo.num_threads 1 --random_seed 7 --MspStereo.advanced_coarsest_image_size 128"
 
 fail() {
   echo "FAIL: $*" >&2

@@ -16,7 +16,7 @@ MEMORY_POINTS=500
 # 4 MiB unless set: states of a few images, images of a few, a round's
 # layers of a few.
 MEMORY_CACHE_GB=${MEMORY_CACHE_GB:-0.00390625}
-MEMORY_STEREO_OPTIONS="--MspStereo.num_threads 1 --MspStereo.coarsest_image_size $MEMORY_WIDTH --MspStereo.deformable false --PatchMatchStereo.cache_size $MEMORY_CACHE_GB --log_level 0"
+MEMORY_STEREO_OPTIONS="--PatchMatchStereo.num_threads 1 --MspStereo.advanced_coarsest_image_size $MEMORY_WIDTH --MspStereo.deformable false --PatchMatchStereo.cache_size $MEMORY_CACHE_GB --log_level 0"
 
 # The bound of README's "Memory": F + M + P x (B0 + B1 x S) + cache_size, F
 # the program's fixed part at one thread, M the sparse model while it is

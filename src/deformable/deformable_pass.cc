@@ -14,9 +14,9 @@ namespace msp {
 
 core::ReliabilityParams ReliabilityAfter(int finished_pass, const MspStereoOptions& msp) {
   core::ReliabilityParams reliability = core::DefaultReliabilityParams(finished_pass);
-  reliability.max_minimum_cost = static_cast<float>(msp.reliable_max_cost);
-  reliability.single_min_cost = static_cast<float>(msp.reliable_single_cost);
-  reliability.min_spread = static_cast<float>(msp.reliable_min_spread);
+  reliability.max_minimum_cost = static_cast<float>(msp.advanced_reliable_max_cost);
+  reliability.single_min_cost = static_cast<float>(msp.advanced_reliable_single_cost);
+  reliability.min_spread = static_cast<float>(msp.advanced_reliable_min_spread);
   return reliability;
 }
 
@@ -38,9 +38,9 @@ DeformableStepReport DeformablePass::Run(const Pass& pass, const core::PassParam
   report.num_unreliable = maps.num_unreliable;
   DeformableSettings settings;
   settings.anchors = core::DefaultAnchorParams(pass.round, params.depth_max - params.depth_min,
-                                               msp_.anchor_max_distance);
+                                               msp_.advanced_anchor_max_distance);
   settings.anchors.equidistribution = msp_.equidistribution;
-  settings.anchors.equidistribution_iterations = msp_.equidistribution_iterations;
+  settings.anchors.equidistribution_iterations = msp_.advanced_equidistribution_iterations;
   settings.cost = core::DefaultDeformableParams();
   if (msp_.disassemble_clustering) {
     // The paper quadruples the anchors per sector (4 rays, 32 hits) for the
@@ -48,18 +48,18 @@ DeformableStepReport DeformablePass::Run(const Pass& pass, const core::PassParam
     settings.anchors.rays_per_sector = core::kMaxRaysPerSector;
     settings.anchors.max_anchors = core::kMaxKeptAnchors;
     settings.cost.disassemble_clustering = true;
-    settings.cost.clusters =
-        core::ClusterParams{msp_.dbscan_eta, static_cast<float>(msp_.dbscan_gamma)};
+    settings.cost.clusters = core::ClusterParams{msp_.advanced_dbscan_eta,
+                                                 static_cast<float>(msp_.advanced_dbscan_gamma)};
   }
   settings.synergistic = msp_.synergistic_optimization;
-  settings.synergy = core::SynergyParams{msp_.sampling_solutions,
-                                         msp_.disparity_samples,
-                                         static_cast<float>(msp_.disparity_step),
-                                         static_cast<float>(msp_.variance_weight),
-                                         msp_.profile_cost_term,
-                                         msp_.sampling_local_search};
+  settings.synergy = core::SynergyParams{msp_.advanced_sampling_solutions,
+                                         msp_.advanced_disparity_samples,
+                                         static_cast<float>(msp_.advanced_disparity_step),
+                                         static_cast<float>(msp_.advanced_variance_weight),
+                                         msp_.advanced_profile_cost_term,
+                                         msp_.advanced_sampling_local_search};
   // Local search keeps improving one solution: it runs in every iteration.
-  settings.synergy_iterations = msp_.sampling_local_search ? pass.iterations : 1;
+  settings.synergy_iterations = msp_.advanced_sampling_local_search ? pass.iterations : 1;
   ConfineAnchors(state->edges, maps, &settings);
   report.sweeps = engine_->DeformableIterations(params, maps, settings, pass.iterations,
                                                 pass.prior ? &prior_anchors_ : nullptr);

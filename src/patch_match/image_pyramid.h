@@ -24,7 +24,7 @@ core::Camera HalveCamera(const core::Camera& camera, int new_width, int new_heig
 // edge bits. Costs are left at the maximum: the next pass rescores. The
 // coarse index is fine index x size ratio: with an odd fine size that puts
 // even fine columns (rows) one coarse pixel left of (above) where the cameras
-// map them; kept, as --MspStereo.joint_bilateral_upsampling false promises
+// map them; kept, as --MspStereo.advanced_joint_bilateral_upsampling false promises
 // the earlier results.
 PixelState UpsampleStateNearest(const PixelState& coarse, const core::Camera& coarse_cam,
                                 const core::Camera& fine_cam);

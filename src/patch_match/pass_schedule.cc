@@ -30,15 +30,15 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
   // rounds found, where pixels are dearest: fewer iterations, and the
   // conventional sweeps unless finest_deformable.
   const bool restoring = round > 0 && last_round;
-  const bool small_enough =
-      msp.deformable_max_image_size == 0 || image_size <= msp.deformable_max_image_size;
+  const bool small_enough = msp.advanced_deformable_max_image_size == 0 ||
+                            image_size <= msp.advanced_deformable_max_image_size;
   const bool round_deformable =
-      msp.deformable && small_enough && (!restoring || msp.finest_deformable);
+      msp.deformable && small_enough && (!restoring || msp.advanced_finest_deformable);
   const bool deformable = round_deformable && !first;
-  pass.iterations = restoring ? msp.finest_iterations : msp.iterations;
-  if (restoring) pass.refine_radius = msp.finest_refine_radius;
+  pass.iterations = restoring ? msp.advanced_finest_iterations : msp.advanced_iterations;
+  if (restoring) pass.refine_radius = msp.advanced_finest_refine_radius;
   // The selections the coarser rounds settled carry up with the planes.
-  pass.weighted_views_only = restoring && msp.weighted_views_only;
+  pass.weighted_views_only = restoring && msp.advanced_weighted_views_only;
   pass.sweeps = deformable ? PassSweeps::kDeformable : PassSweeps::kCheckerboard;
   // A round's first pass classifies with the thresholds after the coarser
   // round's last pass; the others take the classes of the previous refine.
@@ -89,12 +89,13 @@ bool SegmentationPriorEnabled(const MspStereoOptions& msp) {
 
 std::vector<Pass> BuildPassSchedule(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp,
                                     int max_width, int max_height) {
-  const int num_rounds = 1 + NumHalvings(max_width, max_height, msp.coarsest_image_size);
+  const int num_rounds = 1 + NumHalvings(max_width, max_height, msp.advanced_coarsest_image_size);
   std::vector<Pass> schedule;
   int coarser_passes = 0;
   for (int round = 0; round < num_rounds; ++round) {
     const bool restoring = round > 0 && round == num_rounds - 1;
-    const int geometric = restoring ? msp.finest_geometric_passes : msp.geometric_passes;
+    const int geometric =
+        restoring ? msp.advanced_finest_geometric_passes : msp.advanced_geometric_passes;
     const int num_passes = 1 + (pm.geom_consistency ? geometric : 0);
     const int image_size = std::max(max_width, max_height) >> (num_rounds - 1 - round);
     for (int index = 0; index < num_passes; ++index) {

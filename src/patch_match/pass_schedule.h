@@ -17,7 +17,7 @@
 namespace msp {
 
 // APD schedule: 3 red-black iterations per pass, at most 3 geometric passes
-// per round (--MspStereo.geometric_passes, finest_geometric_passes).
+// per round (--MspStereo.advanced_geometric_passes, finest_geometric_passes).
 constexpr int kIterationsPerPass = 3;
 constexpr int kNumGeometricPasses = 3;
 // Pass ids inside a round; rounds are spaced so (round, pass) pairs are unique.

@@ -513,7 +513,7 @@ class CpuRunner {
   // The coarser round's state of view `ref` carried to this round's camera `cam`.
   PixelState Upsample(int ref, const core::Camera& cam) {
     const core::Camera& coarse_cam = coarser_->cameras.at(ref);
-    if (msp_.joint_bilateral_upsampling) {
+    if (msp_.advanced_joint_bilateral_upsampling) {
       return UpsampleStateJointBilateral(cache_.Take(ref), coarser_->gray.at(ref), coarse_cam,
                                          level_->gray.at(ref), cam);
     }

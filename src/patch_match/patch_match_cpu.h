@@ -16,7 +16,7 @@
 namespace msp {
 
 // The schedule with the per-pixel sweeps of `engine` (the other steps of a
-// pass run on the CPU with --MspStereo.num_threads threads). With `shared`,
+// pass run on the CPU with --PatchMatchStereo.num_threads threads). With `shared`,
 // this process computes only shared->owned and meets the other processes of
 // the run at a barrier after every pass (shared_passes.h).
 void RunPatchMatch(const std::vector<View>& views, const std::vector<Problem>& problems,

@@ -61,10 +61,10 @@ SegmentationPriorResult RunSegmentationPrior(const LabelLayers& layers, const Pr
   if (options.edge_refinement) {
     const auto start = std::chrono::steady_clock::now();
     CrfOptions crf;
-    crf.iterations = options.crf_iterations;
-    crf.alpha_relative = static_cast<float>(options.crf_alpha);
-    crf.beta = static_cast<float>(options.crf_beta);
-    crf.unary_confidence = static_cast<float>(options.crf_unary_confidence);
+    crf.iterations = options.advanced_crf_iterations;
+    crf.alpha_relative = static_cast<float>(options.advanced_crf_alpha);
+    crf.beta = static_cast<float>(options.advanced_crf_beta);
+    crf.unary_confidence = static_cast<float>(options.advanced_crf_unary_confidence);
     crf.num_threads = options.num_threads;
     result.refined = RefineSegmentationCrf(result.aggregated, *input.color, input.depth,
                                            input.depth_min, input.depth_max, crf);
@@ -118,7 +118,7 @@ const LabelLayers& PriorDriver::RoundLayers(int view, const DenseMap& color) {
   LabelLayers layers =
       FromMaskFiles(view)
           ? ResampleNearest(views_[view].mask_layers.layers, color.width, color.height)
-          : SegmentMultiscale(color, options_.num_mask_levels, segmenter_);
+          : SegmentMultiscale(color, options_.advanced_num_mask_levels, segmenter_);
   const size_t bytes =
       static_cast<size_t>(layers.width) * layers.height * layers.NumLevels() * sizeof(int32_t);
   if (round_layer_bytes_ + bytes > layer_budget_bytes_) {

@@ -30,6 +30,15 @@ expect_contains "--help lists COLMAP options" "$out" "--PatchMatchStereo.window_
 expect_contains "--help lists MspStereo options" "$out" "--MspStereo.backend arg (=auto)"
 run "$MSP" -h
 expect_eq "-h exit code" "$rc" 0
+case "$out" in
+  *"--MspStereo.advanced_crf_alpha arg"*) fail "--help leaves the advanced options to --help_all" ;;
+  *) pass "--help leaves the advanced options to --help_all" ;;
+esac
+expect_contains "--help points at --help_all" "$out" "--help_all lists"
+run "$MSP" --help_all
+expect_eq "--help_all exit code" "$rc" 0
+expect_contains "--help_all lists the advanced options" "$out" "--MspStereo.advanced_crf_alpha arg (=0.02)"
+expect_contains "--help_all lists the ignored COLMAP options" "$out" "--PatchMatchStereo.num_iterations arg (=5)"
 
 run "$MSP" --workspace_path "$TMP" --bogus_option 1
 expect_error "unknown option" "unknown option \`--bogus_option\`"
@@ -37,6 +46,10 @@ run "$MSP"
 expect_error "no arguments" "missing required option --workspace_path"
 run "$MSP" --workspace_path "$TMP" --PatchMatchStereo.window_step 3
 expect_error "out-of-range value" "invalid value 3 for --PatchMatchStereo.window_step"
+run "$MSP" --workspace_path "$TMP" --MspStereo.seed 3
+expect_error "renamed option" "option --MspStereo.seed was renamed --random_seed"
+run "$MSP" --workspace_path "$TMP" --MspStereo.crf_alpha 0.1
+expect_error "renamed option" "option --MspStereo.crf_alpha was renamed --MspStereo.advanced_crf_alpha"
 run "$MSP" --workspace_path "$TMP" --PatchMatchStereo.num_samples many
 expect_contains "malformed value names the option" "$err" "PatchMatchStereo.num_samples"
 expect_eq "malformed value: exit code" "$rc" 1
@@ -75,7 +88,7 @@ fi
 # The same binary through the dispatcher next to it.
 run env PATH=/usr/bin:/bin "$DISPATCHER" msp_stereo --help
 expect_eq "colmap msp_stereo --help exit code" "$rc" 0
-expect_contains "colmap msp_stereo --help reaches msp_stereo" "$out" "--MspStereo.seed"
+expect_contains "colmap msp_stereo --help reaches msp_stereo" "$out" "--MspStereo.backend"
 run env PATH=/usr/bin:/bin "$DISPATCHER" msp_stereo --workspace_path "$missing"
 expect_eq "colmap msp_stereo on a missing workspace: exit code" "$rc" 1
 

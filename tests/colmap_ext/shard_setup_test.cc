@@ -77,7 +77,7 @@ TEST(ShardSetup, TheFingerprintIgnoresWhatLeavesTheMapsAlone) {
   StereoCommandOptions b = a;
   b.workspace_path = "/nfs/b";
   b.msp.shard = "2/3";
-  b.msp.num_threads = 8;
+  b.patch_match.num_threads = 8;
   b.msp.shard_timeout = 60;
   b.log_level = 0;
   const Workspace workspace = SmallWorkspace();
@@ -85,7 +85,7 @@ TEST(ShardSetup, TheFingerprintIgnoresWhatLeavesTheMapsAlone) {
   EXPECT_EQ(SharedRunFingerprint(b, workspace), fingerprint);
   EXPECT_NE(fingerprint.find("problem sub/c.png <- d.png a.png depth 1 2.5\n"), std::string::npos)
       << fingerprint;
-  b.msp.seed = 1;
+  b.random_seed = 1;
   EXPECT_NE(SharedRunFingerprint(b, workspace), fingerprint);
   Workspace other = workspace;
   other.problems[0].srcs = {3};

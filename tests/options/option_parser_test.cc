@@ -44,40 +44,58 @@ const std::vector<std::string> kColmapPatchMatchFields = {
     "allow_missing_files",
     "write_consistency_graph",
 };
+// --MspStereo.<field>: the common options, then (without their prefix) the
+// advanced ones, --MspStereo.advanced_<field>.
 const std::vector<std::string> kMspFields = {"backend",
-                                             "seed",
-                                             "num_threads",
                                              "mask_path",
-                                             "coarsest_image_size",
-                                             "joint_bilateral_upsampling",
                                              "window_step",
                                              "bilateral_ncc",
                                              "deformable",
-                                             "reliable_max_cost",
-                                             "reliable_single_cost",
-                                             "reliable_min_spread",
-                                             "anchor_max_distance",
                                              "equidistribution",
-                                             "equidistribution_iterations",
                                              "segmentation_prior",
                                              "edge_aggregation",
                                              "edge_refinement",
-                                             "num_mask_levels",
                                              "write_previews",
-                                             "crf_alpha",
-                                             "crf_beta",
-                                             "crf_unary_confidence",
-                                             "crf_iterations",
                                              "disassemble_clustering",
-                                             "dbscan_eta",
-                                             "dbscan_gamma",
-                                             "synergistic_optimization",
-                                             "sampling_solutions",
-                                             "sampling_local_search",
-                                             "disparity_samples",
-                                             "disparity_step",
-                                             "variance_weight",
-                                             "profile_cost_term"};
+                                             "synergistic_optimization"};
+const std::vector<std::string> kMspAdvancedFields = {"coarsest_image_size",
+                                                     "iterations",
+                                                     "finest_iterations",
+                                                     "geometric_passes",
+                                                     "finest_geometric_passes",
+                                                     "deformable_max_image_size",
+                                                     "finest_refine_radius",
+                                                     "finest_deformable",
+                                                     "weighted_views_only",
+                                                     "joint_bilateral_upsampling",
+                                                     "reliable_max_cost",
+                                                     "reliable_single_cost",
+                                                     "reliable_min_spread",
+                                                     "anchor_max_distance",
+                                                     "equidistribution_iterations",
+                                                     "num_mask_levels",
+                                                     "crf_alpha",
+                                                     "crf_beta",
+                                                     "crf_unary_confidence",
+                                                     "crf_iterations",
+                                                     "dbscan_eta",
+                                                     "dbscan_gamma",
+                                                     "sampling_solutions",
+                                                     "sampling_local_search",
+                                                     "disparity_samples",
+                                                     "disparity_step",
+                                                     "variance_weight",
+                                                     "profile_cost_term"};
+// COLMAP options that are accepted and ignored: --help_all lists them, --help does not.
+const std::vector<std::string> kIgnored = {
+    "pmvs_option_name",
+    "log_to_stderr",
+    "PatchMatchStereo.window_step",
+    "PatchMatchStereo.ncc_sigma",
+    "PatchMatchStereo.incident_angle_sigma",
+    "PatchMatchStereo.num_iterations",
+    "PatchMatchStereo.write_consistency_graph",
+};
 const std::vector<std::string> kTopLevel = {
     "workspace_path", "workspace_format", "pmvs_option_name", "config_path",
     "project_path",   "random_seed",      "log_to_stderr",    "log_level"};
@@ -181,10 +199,8 @@ TEST(OptionParser, ParsesEveryKindOfValue) {
                                         "1",
                                         "--MspStereo.backend",
                                         "cuda",
-                                        "--MspStereo.seed",
+                                        "--random_seed",
                                         "42",
-                                        "--MspStereo.num_threads",
-                                        "-1",
                                         "--MspStereo.mask_path",
                                         "m",
                                         "--log_to_stderr",
@@ -205,18 +221,45 @@ TEST(OptionParser, ParsesEveryKindOfValue) {
   EXPECT_TRUE(o.patch_match.allow_missing_files);
   EXPECT_EQ(o.msp.backend, "cuda");
   EXPECT_EQ(o.msp.seed, 42);
+  EXPECT_EQ(o.msp.num_threads, 4);
   EXPECT_EQ(o.msp.mask_path, "m");
 }
 
-TEST(OptionParser, RandomSeedFeedsMspSeedUnlessGiven) {
-  EXPECT_EQ(Parse({"--workspace_path", "w", "--random_seed", "7"}).msp.seed, 7);
-  EXPECT_EQ(
-      Parse({"--workspace_path", "w", "--random_seed", "7", "--MspStereo.seed", "3"}).msp.seed, 3);
+// COLMAP's options are the only names of the seed and the thread count; the
+// back-ends read them from options.msp.
+TEST(OptionParser, RandomSeedAndNumThreadsReachTheBackEnds) {
+  const StereoCommandOptions o =
+      Parse({"--workspace_path", "w", "--random_seed", "7", "--PatchMatchStereo.num_threads", "3"});
+  EXPECT_EQ(o.msp.seed, 7);
+  EXPECT_EQ(o.msp.num_threads, 3);
+  EXPECT_EQ(Parse({"--workspace_path", "w"}).msp.num_threads, -1);
+}
+
+// An option of an earlier version stops with the name it has now, on the
+// command line and in an ini file.
+TEST(OptionParser, RenamedOptionsNameTheirNewName) {
+  EXPECT_EQ(ParseError({"--workspace_path", "w", "--MspStereo.seed", "3"}),
+            "option --MspStereo.seed was renamed --random_seed");
+  EXPECT_EQ(ParseError({"--workspace_path", "w", "--MspStereo.num_threads=2"}),
+            "option --MspStereo.num_threads was renamed --PatchMatchStereo.num_threads");
+  for (const std::string& field : kMspAdvancedFields) {
+    EXPECT_EQ(ParseError({"--workspace_path", "w", "--MspStereo." + field, "1"}),
+              "option --MspStereo." + field + " was renamed --MspStereo.advanced_" + field);
+  }
+  const IniFile seed("workspace_path=w\n[MspStereo]\nseed=11\n");
+  EXPECT_EQ(ParseError({"--project_path", seed.path()}),
+            "option `seed` under [MspStereo] in --project_path file `" + seed.path() +
+                "` was renamed: use `random_seed` before any section");
+  const IniFile crf("workspace_path=w\n[MspStereo]\ncrf_alpha=0.1\n");
+  EXPECT_EQ(ParseError({"--project_path", crf.path()}),
+            "option `crf_alpha` under [MspStereo] in --project_path file `" + crf.path() +
+                "` was renamed: use `advanced_crf_alpha` under [MspStereo]");
 }
 
 TEST(OptionParser, ReadsIniWithBothSections) {
   const IniFile ini(
       "workspace_path=/from/ini\n"
+      "random_seed=11\n"
       "database_path=/ignored/db\n"
       "[SiftExtraction]\n"
       "use_gpu=false\n"
@@ -227,8 +270,7 @@ TEST(OptionParser, ReadsIniWithBothSections) {
       "depth_min=0.5\n"
       "depth_max=10\n"
       "[MspStereo]\n"
-      "backend=cuda\n"
-      "seed=11\n");
+      "backend=cuda\n");
   const StereoCommandOptions o = Parse({"--project_path", ini.path()});
   EXPECT_EQ(o.workspace_path, "/from/ini");
   EXPECT_EQ(o.patch_match.window_radius, 9);
@@ -265,9 +307,8 @@ TEST(OptionParser, ReadsColmapProjectIni) {
 
 TEST(OptionParser, CommandLineOverridesIni) {
   const IniFile ini(
-      "workspace_path=/from/ini\n"
-      "[PatchMatchStereo]\nwindow_radius=9\nnum_samples=4\ngeom_consistency=true\n"
-      "[MspStereo]\nseed=11\n");
+      "workspace_path=/from/ini\nrandom_seed=11\n"
+      "[PatchMatchStereo]\nwindow_radius=9\nnum_samples=4\ngeom_consistency=true\n");
   const StereoCommandOptions o =
       Parse({"--PatchMatchStereo.window_radius", "3", "--project_path", ini.path(),
              "--workspace_path", "/from/cli", "--PatchMatchStereo.geom_consistency", "0"});
@@ -319,11 +360,14 @@ TEST(OptionParser, HelpWinsAndListsEveryOption) {
   EXPECT_EQ(status, ParseStatus::kHelp);
   Parse({"--no_such_option", "-h"}, &status);
   EXPECT_EQ(status, ParseStatus::kHelp);
+  Parse({"--help", "--help_all"}, &status);
+  EXPECT_EQ(status, ParseStatus::kHelpAll);
 
-  const std::string usage = StereoCommandUsage();
+  const std::string usage = StereoCommandUsage(UsageScope::kAllOptions);
   std::vector<std::string> expected = kTopLevel;
   for (const std::string& f : kColmapPatchMatchFields) expected.push_back("PatchMatchStereo." + f);
   for (const std::string& f : kMspFields) expected.push_back("MspStereo." + f);
+  for (const std::string& f : kMspAdvancedFields) expected.push_back("MspStereo.advanced_" + f);
   for (const std::string& name : expected) {
     EXPECT_NE(usage.find("--" + name + " "), std::string::npos) << name;
   }
@@ -333,6 +377,35 @@ TEST(OptionParser, HelpWinsAndListsEveryOption) {
   EXPECT_NE(usage.find("--PatchMatchStereo.geom_consistency arg (=true)"), std::string::npos);
   EXPECT_NE(usage.find("Half window size"), std::string::npos);
   EXPECT_NE(usage.find("--MspStereo.backend arg (=auto)"), std::string::npos);
+  // No line is wider than the help layout, and no word is broken.
+  std::istringstream lines(usage);
+  for (std::string line; std::getline(lines, line);) {
+    EXPECT_LE(line.size(), 100u) << line;
+  }
+  EXPECT_NE(usage.find(" --MspStereo.advanced_geometric_passes "), std::string::npos) << usage;
+}
+
+// --help lists the common options only, and says how many more --help_all lists.
+TEST(OptionParser, HelpLeavesTheAdvancedAndIgnoredOptionsToHelpAll) {
+  const std::string usage = StereoCommandUsage();
+  // An option's entry starts a line; help texts may name other options.
+  const auto lists = [](const std::string& usage, const std::string& name) {
+    return usage.find("\n  --" + name + " ") != std::string::npos;
+  };
+  for (const std::string& f : kMspFields) EXPECT_TRUE(lists(usage, "MspStereo." + f)) << f;
+  EXPECT_TRUE(lists(usage, "PatchMatchStereo.window_radius"));
+  for (const std::string& f : kMspAdvancedFields) {
+    EXPECT_FALSE(lists(usage, "MspStereo.advanced_" + f)) << f;
+  }
+  for (const std::string& name : kIgnored) {
+    EXPECT_FALSE(lists(usage, name)) << name;
+    EXPECT_TRUE(lists(StereoCommandUsage(UsageScope::kAllOptions), name)) << name;
+  }
+  EXPECT_NE(
+      usage.find("--help_all lists " + std::to_string(kMspAdvancedFields.size() + kIgnored.size()) +
+                 " more options"),
+      std::string::npos)
+      << usage;
 }
 
 TEST(OptionParser, EveryListedOptionParses) {
@@ -342,6 +415,9 @@ TEST(OptionParser, EveryListedOptionParses) {
   }
   for (const std::string& f : kMspFields) {
     EXPECT_NE(std::find(names.begin(), names.end(), "MspStereo." + f), names.end()) << f;
+  }
+  for (const std::string& f : kMspAdvancedFields) {
+    EXPECT_NE(std::find(names.begin(), names.end(), "MspStereo.advanced_" + f), names.end()) << f;
   }
   // Each option accepts a value of its type on the command line.
   for (const std::string& name : names) {
@@ -409,10 +485,11 @@ TEST(OptionParser, PrintListsEveryRegisteredOptionOnceWithItsValue) {
   EXPECT_TRUE(has("--PatchMatchStereo.window_radius 8"));
   EXPECT_TRUE(has("--PatchMatchStereo.sigma_color 0.2"));
   EXPECT_TRUE(has("--PatchMatchStereo.geom_consistency true"));
-  EXPECT_TRUE(has("--PatchMatchStereo.num_threads -1"));  // accepted, ignored: still listed
+  EXPECT_TRUE(has("--PatchMatchStereo.num_threads -1"));
+  EXPECT_TRUE(has("--PatchMatchStereo.num_iterations 5"));  // accepted, ignored: still listed
   EXPECT_TRUE(has("--MspStereo.backend auto"));
   EXPECT_TRUE(has("--MspStereo.mask_path ''"));
-  EXPECT_TRUE(has("--MspStereo.joint_bilateral_upsampling true"));
+  EXPECT_TRUE(has("--MspStereo.advanced_joint_bilateral_upsampling true"));
   EXPECT_TRUE(has("--log_level 2"));
 }
 
@@ -439,9 +516,9 @@ TEST(OptionParser, PrintedValuesRoundTripThroughTheParser) {
                                           "0",
                                           "--MspStereo.mask_path",
                                           "masks; rm -rf x",
-                                          "--MspStereo.crf_alpha",
+                                          "--MspStereo.advanced_crf_alpha",
                                           "1e-07",
-                                          "--MspStereo.num_threads",
+                                          "--PatchMatchStereo.num_threads",
                                           "3"};
   const StereoCommandOptions first = Parse(given);
   const std::vector<std::string> printed = PrintedLines(first);
@@ -463,24 +540,24 @@ TEST(OptionParser, PrintedValuesRoundTripThroughTheParser) {
   EXPECT_EQ(second.patch_match.gpu_index, "0,1");
   EXPECT_FALSE(second.patch_match.filter);
   EXPECT_EQ(second.msp.mask_path, "masks; rm -rf x");
-  EXPECT_EQ(second.msp.crf_alpha, 1e-7);
+  EXPECT_EQ(second.msp.advanced_crf_alpha, 1e-7);
   EXPECT_EQ(second.msp.num_threads, 3);
-  EXPECT_EQ(second.msp.seed, 9);  // from --random_seed, and printed as --MspStereo.seed
+  EXPECT_EQ(second.msp.seed, 9);  // from --random_seed, printed as such
 }
 
 // The names a visitor hears, and each field's address.
 class NameCollector : public OptionVisitor {
  public:
-  void Visit(const std::string& name, int* field, const std::string& help) override {
+  void Visit(const std::string& name, int* field, const std::string& help, OptionGroup) override {
     Add(name, field, help);
   }
-  void Visit(const std::string& name, double* field, const std::string& help) override {
+  void Visit(const std::string& name, double* field, const std::string& help, OptionGroup) override {
     Add(name, field, help);
   }
-  void Visit(const std::string& name, bool* field, const std::string& help) override {
+  void Visit(const std::string& name, bool* field, const std::string& help, OptionGroup) override {
     Add(name, field, help);
   }
-  void Visit(const std::string& name, std::string* field, const std::string& help) override {
+  void Visit(const std::string& name, std::string* field, const std::string& help, OptionGroup) override {
     Add(name, field, help);
   }
   std::vector<std::string> names;

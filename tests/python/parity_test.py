@@ -74,8 +74,8 @@ class ParityTest(unittest.TestCase):
         cls.scratch.cleanup()
 
     def test_maps_are_the_programs_byte_for_byte(self):
-        options = msp_stereo.PatchMatchOptions(max_image_size=160)
-        msp_options = msp_stereo.MspStereoOptions(num_threads=2)
+        options = msp_stereo.PatchMatchOptions(max_image_size=160, num_threads=2)
+        msp_options = msp_stereo.MspStereoOptions()
         program_ws = support.copy_workspace(self.scene, self.scratch.path / "program")
         result = support.run_program(program_ws, options, msp_options)
         self.assertEqual(result.returncode, 0, result.stderr)

@@ -22,8 +22,8 @@ SMALL_SCENE = ["--width", "128", "--height", "96", "--num_cameras", "3", "--seed
 def small_run_options():
     """The options of the small scene's runs: one round, one thread (CI
     machines are shared)."""
-    return (msp_stereo.PatchMatchOptions(),
-            msp_stereo.MspStereoOptions(num_threads=1, seed=7, coarsest_image_size=128))
+    return (msp_stereo.PatchMatchOptions(num_threads=1),
+            msp_stereo.MspStereoOptions(advanced_coarsest_image_size=128))
 
 
 class Scratch:

@@ -41,9 +41,9 @@ std::vector<uint8_t> RingAroundTheBlock(uint8_t bits) {
 
 TEST(DeformablePass, ReliabilityAfterTakesTheOptionsCosts) {
   MspStereoOptions msp;
-  msp.reliable_max_cost = 0.4;
-  msp.reliable_single_cost = 0.125;
-  msp.reliable_min_spread = 0.25;
+  msp.advanced_reliable_max_cost = 0.4;
+  msp.advanced_reliable_single_cost = 0.125;
+  msp.advanced_reliable_min_spread = 0.25;
   const core::ReliabilityParams rp = ReliabilityAfter(2, msp);
   const core::ReliabilityParams defaults = core::DefaultReliabilityParams(2);
   EXPECT_EQ(rp.max_minimum_cost, 0.4f);
@@ -212,7 +212,7 @@ TEST(DeformablePass, EquidistributionOffIsTheFixedSectorSearch) {
   DeformableSettings settings;
   settings.anchors =
       core::DefaultAnchorParams(pass.round, direct.params.depth_max - direct.params.depth_min,
-                                MspStereoOptions().anchor_max_distance);
+                                MspStereoOptions().advanced_anchor_max_distance);
   settings.cost = core::DefaultDeformableParams();
   DeformableBuffers buffers;
   std::vector<core::PriorAnchors> direct_anchors;
@@ -323,7 +323,7 @@ TEST(DeformablePass, DisassembleClusteringOffIsApdsStep) {
   RandomPlanes(&apd);
   DeformableSettings settings;
   settings.anchors = core::DefaultAnchorParams(0, apd.params.depth_max - apd.params.depth_min,
-                                               msp.anchor_max_distance);
+                                               msp.advanced_anchor_max_distance);
   settings.cost = core::DefaultDeformableParams();
   const ReliabilityMaps maps = MakeReliabilityMaps(BlockClasses(), kWidth, kHeight, kNumThreads);
   DeformableBuffers buffers;
@@ -347,8 +347,9 @@ TEST(DeformablePass, SynergisticOptimizationOffIsClusteringAlone) {
   RunFromRandomPlanes(msp, &off);
   RandomPlanes(&clustering);
   DeformableSettings settings;
-  settings.anchors = core::DefaultAnchorParams(
-      0, clustering.params.depth_max - clustering.params.depth_min, msp.anchor_max_distance);
+  settings.anchors =
+      core::DefaultAnchorParams(0, clustering.params.depth_max - clustering.params.depth_min,
+                                msp.advanced_anchor_max_distance);
   settings.anchors.rays_per_sector = core::kMaxRaysPerSector;  // the quadrupled anchors
   settings.anchors.max_anchors = core::kMaxKeptAnchors;
   settings.cost = core::DefaultDeformableParams();
@@ -371,10 +372,10 @@ TEST(DeformablePass, EverySynergySwitchChangesTheOutput) {
   RunFromRandomPlanes(MspStereoOptions(), &reference);
   for (int k = 0; k < 5; ++k) {
     MspStereoOptions msp;
-    if (k == 4) msp.sampling_local_search = !msp.sampling_local_search;
-    if (k == 0) msp.variance_weight = 0.0;
-    if (k == 1) msp.profile_cost_term = false;
-    if (k == 2) msp.disparity_samples = 3;
+    if (k == 4) msp.advanced_sampling_local_search = !msp.advanced_sampling_local_search;
+    if (k == 0) msp.advanced_variance_weight = 0.0;
+    if (k == 1) msp.advanced_profile_cost_term = false;
+    if (k == 2) msp.advanced_disparity_samples = 3;
     if (k == 3) msp.disassemble_clustering = false;
     Scene s;
     RunFromRandomPlanes(msp, &s);
@@ -388,7 +389,7 @@ TEST(DeformablePass, DbscanParametersChangeTheClusters) {
   Scene automatic, wide;
   RunFromRandomPlanes(MspStereoOptions(), &automatic);
   MspStereoOptions msp;
-  msp.dbscan_gamma = 40.0;  // one cluster of most anchors
+  msp.advanced_dbscan_gamma = 40.0;  // one cluster of most anchors
   RunFromRandomPlanes(msp, &wide);
   EXPECT_NE(automatic.state.depth, wide.state.depth);
 }

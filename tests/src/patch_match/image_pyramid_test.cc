@@ -98,7 +98,7 @@ TEST(ImagePyramid, UpsampleCarriesPriorEdgesByNearestNeighbour) {
 
 // Nearest neighbour is each fine pixel's coarse pixel (c / 2, r / 2): its
 // plane on the fine ray, bit for bit, its mask and edge bits. This is what
-// --MspStereo.joint_bilateral_upsampling false runs, as before the option.
+// --MspStereo.advanced_joint_bilateral_upsampling false runs, as before the option.
 TEST(ImagePyramid, UpsampleNearestIsTheCoarsePixelItFallsIn) {
   const core::Camera fine = test::CentredCamera(64, 48);
   const core::Camera coarse = HalveCamera(fine, 32, 24);

@@ -26,10 +26,10 @@ constexpr int kSceneHeight = 240;
 // deformable step at any size and the finest round's own narrowing off.
 MspStereoOptions OneRound() {
   MspStereoOptions msp = WithDeformable();
-  msp.coarsest_image_size = 1000;
-  msp.deformable_max_image_size = 0;
-  msp.weighted_views_only = false;
-  msp.finest_refine_radius = core::kLocalRefineRadius;
+  msp.advanced_coarsest_image_size = 1000;
+  msp.advanced_deformable_max_image_size = 0;
+  msp.advanced_weighted_views_only = false;
+  msp.advanced_finest_refine_radius = core::kLocalRefineRadius;
   return msp;
 }
 
@@ -101,7 +101,7 @@ TEST(PassSchedule, TheMethodRestoresDetailInTheFinestRound) {
 // whose selections the coarser rounds settled; never with one round.
 TEST(PassSchedule, WeightedViewsOnlyInTheFinestRound) {
   MspStereoOptions msp = WithDeformable();
-  msp.weighted_views_only = true;
+  msp.advanced_weighted_views_only = true;
   const std::vector<Pass> schedule =
       BuildPassSchedule(PatchMatchStereoOptions(), msp, kSceneWidth, kSceneHeight);
   ASSERT_EQ(schedule.size(), 12u);
@@ -113,7 +113,7 @@ TEST(PassSchedule, WeightedViewsOnlyInTheFinestRound) {
                       "checkerboard on the selected views;"),
             std::string::npos);
   MspStereoOptions one_round = OneRound();
-  one_round.weighted_views_only = true;
+  one_round.advanced_weighted_views_only = true;
   for (const Pass& pass :
        BuildPassSchedule(PatchMatchStereoOptions(), one_round, kSceneWidth, kSceneHeight)) {
     EXPECT_FALSE(pass.weighted_views_only);
@@ -125,12 +125,12 @@ TEST(PassSchedule, WeightedViewsOnlyInTheFinestRound) {
 // with the thresholds after the coarser round's last pass.
 TEST(PassSchedule, PassesAndIterationsPerRound) {
   MspStereoOptions msp = WithDeformable();
-  msp.geometric_passes = 2;
-  msp.finest_geometric_passes = 1;
-  msp.iterations = 2;
-  msp.finest_iterations = 1;
-  msp.finest_deformable = true;
-  msp.deformable_max_image_size = 0;
+  msp.advanced_geometric_passes = 2;
+  msp.advanced_finest_geometric_passes = 1;
+  msp.advanced_iterations = 2;
+  msp.advanced_finest_iterations = 1;
+  msp.advanced_finest_deformable = true;
+  msp.advanced_deformable_max_image_size = 0;
   const std::vector<Pass> schedule =
       BuildPassSchedule(PatchMatchStereoOptions(), msp, kSceneWidth, kSceneHeight);
   // Rounds at 80, 160 (3 passes each) and 320 px (2 passes).
@@ -151,8 +151,8 @@ TEST(PassSchedule, PassesAndIterationsPerRound) {
 // the prior (which confines anchors) runs only after deformable passes.
 TEST(PassSchedule, DeformableOnlyUpToAnImageSize) {
   MspStereoOptions msp = WithDeformable();
-  msp.deformable_max_image_size = 160;
-  msp.finest_deformable = true;
+  msp.advanced_deformable_max_image_size = 160;
+  msp.advanced_finest_deformable = true;
   const std::vector<Pass> schedule = BuildPassSchedule(PatchMatchStereoOptions(), msp, 640, 480);
   ASSERT_EQ(schedule.size(), 16u);  // rounds at 80, 160, 320 and 640 px
   for (const Pass& pass : schedule) {
@@ -191,8 +191,8 @@ TEST(PassSchedule, SeveralRoundsWithoutGeometricConsistencyClassifyAtEachRoundSt
   PatchMatchStereoOptions pm;
   pm.geom_consistency = false;
   MspStereoOptions msp = OneRound();  // 1500 -> 750: two rounds
-  msp.finest_deformable = true;
-  msp.finest_iterations = 3;
+  msp.advanced_finest_deformable = true;
+  msp.advanced_finest_iterations = 3;
   msp.segment_planes = false;
   msp.write_previews = true;
   // The prior preview shows the prior's edges: without the prior there is none.
@@ -215,7 +215,7 @@ TEST(PassSchedule, ClassesAndIdsAreConsistent) {
       pm.geom_consistency = geom;
       MspStereoOptions msp = WithDeformable();
       msp.deformable = variant != 0;
-      msp.finest_deformable = variant == 2;
+      msp.advanced_finest_deformable = variant == 2;
       // 4000 -> 2000 -> ... -> 62: seven rounds.
       const std::vector<Pass> schedule = BuildPassSchedule(pm, msp, 4000, 3000);
       ASSERT_EQ(schedule.size(), 7u * (geom ? 4 : 1));

@@ -131,7 +131,7 @@ TEST(PriorDriver, GeometryLayersAddDepthEdgesAndOffIsTheColourOnlyPrior) {
     options.segmenter = segmenter;
     const std::vector<uint8_t> colour_only = RunOnce(views, options, scene, false);
     EXPECT_EQ(UnpackEdgeBit(colour_only, kConfiningEdge),
-              UnionOfLayers(SegmentMultiscale(scene.color, options.num_mask_levels,
+              UnionOfLayers(SegmentMultiscale(scene.color, options.advanced_num_mask_levels,
                                               SegmenterFromName(segmenter)))
                   .edges);
     const std::vector<uint8_t> with_geometry = RunOnce(views, options, scene, true);
@@ -194,7 +194,7 @@ TEST(PriorDriver, LayersBeyondTheBudgetAreMadeAgainWithTheSameEdges) {
   const std::vector<std::vector<uint8_t>> kept = run(SIZE_MAX);
   EXPECT_NE(kept[0], kept[1]);
   const size_t one_image =
-      BoxScene::kWidth * BoxScene::kHeight * sizeof(int32_t) * UnionOnly().num_mask_levels;
+      BoxScene::kWidth * BoxScene::kHeight * sizeof(int32_t) * UnionOnly().advanced_num_mask_levels;
   EXPECT_EQ(run(0), kept);
   EXPECT_EQ(run(one_image), kept);
 }

@@ -23,10 +23,10 @@
 #include <string>
 #include <vector>
 
-#include "colmap_ext/dense_map_io.h"
-#include "colmap_ext/ground_truth.h"
-#include "colmap_ext/workspace.h"
 #include "core/prior/prior_limits.h"
+#include "io/dense_map_io.h"
+#include "io/ground_truth.h"
+#include "io/workspace.h"
 #include "options/tool_command_line.h"
 #include "patch_match/image_pyramid.h"
 #include "prior/geometry_layers.h"

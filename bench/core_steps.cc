@@ -20,11 +20,12 @@
 #include <string>
 #include <vector>
 
+#include "backend/cpu/cpu_sweep_engine.h"
 #include "backend/device_self_check.h"
 #include "backend/self_check_problem.h"
+#include "engine/sweep_engine.h"
 #include "options/tool_command_line.h"
 #include "patch_match/pixel_state_io.h"
-#include "patch_match/sweep_engine.h"
 
 namespace msp {
 namespace {

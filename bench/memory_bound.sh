@@ -17,8 +17,8 @@ if [ "${1:-}" = "--counts" ]; then counts=$2; shift 2; fi
 BIN="${MSP_BIN:-$root/build/bin}"
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
-# shellcheck source=../integration/memory/common.sh
-. "$root/integration/memory/common.sh"
+# shellcheck source=../tests/integration/memory/common.sh
+. "$root/tests/integration/memory/common.sh"
 
 echo "| images | peak RSS (MiB) | bound (MiB) | user CPU (s) |"
 echo "|---:|---:|---:|---:|"

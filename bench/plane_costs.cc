@@ -24,11 +24,11 @@
 #include <string>
 #include <vector>
 
-#include "colmap_ext/dense_map_io.h"
-#include "colmap_ext/ground_truth.h"
-#include "colmap_ext/workspace.h"
 #include "core/patch_match/patch_match_kernel.h"
 #include "core/patch_match/segment_plane.h"
+#include "io/dense_map_io.h"
+#include "io/ground_truth.h"
+#include "io/workspace.h"
 #include "options/tool_command_line.h"
 #include "patch_match/problem_level.h"
 

@@ -3,9 +3,9 @@
 #include <cstdint>
 #include <string>
 
-#include "colmap_ext/dense_map_io.h"
-#include "colmap_ext/errors.h"
 #include "fuzz/fuzz_input.h"
+#include "io/dense_map_io.h"
+#include "io/errors.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = msp::fuzz::WriteInputFile(

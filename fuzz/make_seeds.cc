@@ -21,11 +21,11 @@
 #include <string>
 #include <vector>
 
-#include "colmap_ext/dense_map_io.h"
-#include "colmap_ext/errors.h"
-#include "colmap_ext/file_util.h"
-#include "colmap_ext/sparse_model.h"
 #include "fuzz/fuzz_input.h"
+#include "io/dense_map_io.h"
+#include "io/errors.h"
+#include "io/file_util.h"
+#include "io/sparse_model.h"
 #include "options/option_parser.h"
 
 namespace msp {

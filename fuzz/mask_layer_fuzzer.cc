@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <string>
 
-#include "colmap_ext/errors.h"
-#include "colmap_ext/mask_layers.h"
 #include "fuzz/fuzz_input.h"
+#include "io/errors.h"
+#include "io/mask_layers.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   msp::fuzz::WriteInputFile("image.png.0.png",

@@ -3,9 +3,9 @@
 #include <cstdint>
 #include <string>
 
-#include "colmap_ext/errors.h"
-#include "colmap_ext/patch_match_config.h"
 #include "fuzz/fuzz_input.h"
+#include "io/errors.h"
+#include "io/patch_match_config.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = msp::fuzz::WriteInputFile(

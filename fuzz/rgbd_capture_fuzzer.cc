@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "colmap_ext/errors.h"
-#include "colmap_ext/file_util.h"
 #include "fuzz/fuzz_input.h"
-#include "integration/rgbd/depth_png.h"
-#include "integration/rgbd/rgbd_sequence.h"
+#include "io/errors.h"
+#include "io/file_util.h"
+#include "tools/rgbd/depth_png.h"
+#include "tools/rgbd/rgbd_sequence.h"
 
 namespace {
 

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "colmap_ext/errors.h"
-#include "colmap_ext/file_util.h"
-#include "colmap_ext/patch_match_config.h"
-#include "colmap_ext/sparse_model.h"
 #include "fuzz/fuzz_input.h"
+#include "io/errors.h"
+#include "io/file_util.h"
+#include "io/patch_match_config.h"
+#include "io/sparse_model.h"
 
 namespace msp {
 namespace fuzz {

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "base/dense_map.h"
-#include "colmap_ext/errors.h"
-#include "colmap_ext/image_loading.h"
 #include "fuzz/fuzz_input.h"
+#include "io/errors.h"
+#include "io/image_loading.h"
 
 namespace {
 

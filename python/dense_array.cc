@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "base/dense_map.h"
-#include "colmap_ext/dense_map_io.h"
+#include "io/dense_map_io.h"
 
 namespace py = pybind11;
 

@@ -5,7 +5,7 @@
 #include <pybind11/pybind11.h>
 
 #include "base/stop_request.h"
-#include "colmap_ext/errors.h"
+#include "io/errors.h"
 #include "options/option_parser.h"
 #include "python/dense_array.h"
 #include "python/options_binding.h"

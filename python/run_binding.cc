@@ -12,10 +12,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "app/stereo_command.h"
 #include "base/log.h"
 #include "base/progress.h"
 #include "base/stop_request.h"
-#include "colmap_ext/stereo_command.h"
 #include "options/option_parser.h"
 #include "options/stereo_options.h"
 #include "python/python_log.h"

@@ -1,5 +1,5 @@
 // msp_stereo.patch_match_stereo: pycolmap's patch_match_stereo, on the
-// msp_stereo command (colmap_ext/stereo_command.h), so that the same options
+// msp_stereo command (app/stereo_command.h), so that the same options
 // give the program's maps byte for byte.
 #pragma once
 

@@ -4,7 +4,7 @@
 # fuzz/corpus/<target>, as many at a time as there are cores (MSP_FUZZ_JOBS).
 # Fails when a target finds a crash, hang (an input taking over 10 s), leak,
 # or allocation over 512 MB; the input is left in build-fuzz/artifacts/ (turn
-# it into a unit test in tests/colmap_ext/reader_hardening_test.cc).
+# it into a unit test in tests/io/reader_hardening_test.cc).
 #
 #   scripts/fuzz.sh [SECONDS]          build and fuzz every target
 #   scripts/fuzz.sh --seeds WORKSPACE  rewrite fuzz/corpus from a workspace of msp_make_scene

@@ -14,7 +14,7 @@ PACKAGES=(
   colmap                                         # stereo_fusion for demos and tests (no CUDA needed)
   python3-numpy python3-opencv                   # bench/ply_stats.py, the Python module's tests
   pybind11-dev python3-dev                       # the Python module (python/)
-  time                                           # peak memory of a run (integration/memory, bench/)
+  time                                           # peak memory of a run (tests/integration/memory, bench/)
 )
 
 missing=()

@@ -86,7 +86,7 @@ import os
 import sys
 
 # Relative depth within which two pixels agree: the CUDA parity tests'
-# tolerance (tests/cuda/parity_checks.h).
+# tolerance (tests/src/backend/cuda/parity_checks.h).
 TOLERANCE = 1e-3
 # Bounds on the share of agreeing pixels, by kind of map: (run, image).
 # Whole runs agree pixel for pixel far less than single steps do (where

@@ -1,5 +1,5 @@
 // Device memory of one reference image on the CUDA back-end, from the sizes
-// of the buffers its kernels hold at once (cuda/device_pass.h), and the check
+// of the buffers its kernels hold at once (src/backend/cuda/device_pass.h), and the check
 // of every image against the free memory of the GPU it runs on, made before
 // anything runs: an image that does not fit stops the run with the size that
 // would, instead of failing inside a kernel.

@@ -1,6 +1,6 @@
 // What the back-end choice needs to know about CUDA devices, behind an
 // interface: the CUDA build answers with the runtime's device list and runs
-// the self-check on a device (cuda/device_query.cc), a build without CUDA
+// the self-check on a device (src/backend/cuda/device_query.cc), a build without CUDA
 // with none, and tests with a fake list.
 #pragma once
 

@@ -9,11 +9,12 @@
 #include <utility>
 #include <vector>
 
+#include "backend/cpu/cpu_sweep_engine.h"
 #include "backend/self_check_problem.h"
 #include "core/deformable/reliability.h"
 #include "deformable/deformable_pass.h"
+#include "engine/pass_schedule.h"
 #include "options/stereo_options.h"
-#include "patch_match/pass_schedule.h"
 
 namespace msp {
 namespace {
@@ -42,7 +43,7 @@ void DeformableStep(SweepEngine& engine, const core::PassParams& params, int num
   pass.sweeps = PassSweeps::kDeformable;
   pass.iterations = kDeformableIterations;
   pass.classify_after = 0;
-  DeformablePass(MspStereoOptions(), num_threads, &engine).Run(pass, params, state);
+  DeformablePass(MspStereoOptions(), num_threads, engine).Run(pass, params, state);
 }
 
 bool Within(float a, float b, float tolerance) { return std::fabs(a - b) <= tolerance; }

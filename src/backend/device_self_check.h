@@ -6,7 +6,7 @@
 // The kernels call the same src/core functions with the same random numbers,
 // so the two differ only where the CPU's AVX2 path of the matching cost or
 // the device's last bits of sqrt/exp flip a near tie between two candidates:
-// a small share of pixels (the parity tests' bound, tests/cuda/). A device
+// a small share of pixels (the parity tests' bound, tests/src/backend/cuda/). A device
 // that computes wrongly (a miscompiled kernel, a driver or hardware fault)
 // differs at many, and a CUDA error fails the check with the error's text.
 #pragma once
@@ -16,8 +16,8 @@
 
 #include "backend/device_query.h"
 #include "backend/self_check_problem.h"
-#include "patch_match/pixel_state.h"
-#include "patch_match/sweep_engine.h"
+#include "engine/pixel_state.h"
+#include "engine/sweep_engine.h"
 
 namespace msp {
 

@@ -32,7 +32,7 @@ constexpr float kCellsPerMetre = 30.0f;
 constexpr uint64_t kTextureSeed = 0x5E1FC4EC;
 // The pass: a depth range around the plane; the cost and the view sampling
 // are the options' defaults (see Params); the refinement's perturbations
-// ACMM's +-2 % depth and +-1.8 degrees of normal, as patch_match_cpu.cc.
+// ACMM's +-2 % depth and +-1.8 degrees of normal, as patch_match/pass_runner.cc.
 constexpr float kDepthMin = 1.0f, kDepthMax = 4.0f;
 constexpr float kPerturbDepth = 0.02f, kPerturbNormal = 1.8f * 3.14159265f / 180.0f;
 constexpr uint32_t kSeed = 0x5E1F;
@@ -103,7 +103,7 @@ core::PassParams SelfCheckProblem::Params(bool geometric, PixelState* state) con
     src.depth = geometric ? ViewOf(plane_depth_[j + 1]) : core::ImageView{nullptr, 0, 0, 0};
   }
   // The default cost window and view sampling, as a run with default options
-  // builds them (patch_match_cpu.cc).
+  // builds them (patch_match/pass_runner.cc).
   const PatchMatchStereoOptions pm;
   const MspStereoOptions msp;
   p.ncc.window_radius = pm.window_radius;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/patch_match/patch_match_kernel.h"
-#include "patch_match/pixel_state.h"
+#include "engine/pixel_state.h"
 
 namespace msp {
 

@@ -1,6 +1,6 @@
 // What the stereo back-ends consume: views (camera + images at the working
 // resolution) and problems (a reference view, its source views and its depth
-// range). colmap_ext fills these from a workspace; nothing here knows files.
+// range). io/workspace.h fills these from a workspace; nothing here knows files.
 #pragma once
 
 #include <functional>
@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "base/dense_map.h"
+#include "base/label_layers.h"
 #include "core/math/camera.h"
-#include "prior/label_layers.h"
 
 namespace msp {
 
@@ -24,7 +24,7 @@ struct View {
   // Empty = the images above are all there is.
   std::function<void(DenseMap* gray, DenseMap* color)> load_images;
   // Segmentation mask layers of the prior at the working resolution, read by
-  // colmap_ext for reference views; kEmbeddedSegmenter (layers empty) = the
+  // io/mask_layers.h for reference views; kEmbeddedSegmenter (layers empty) = the
   // prior segments `color` itself at every round's resolution.
   ImageLabelLayers mask_layers;
 };

@@ -4,10 +4,10 @@
 #include <stdexcept>
 #include <utility>
 
+#include "base/nearest_marked_pixels.h"
 #include "base/seconds_since.h"
 #include "core/deformable/anchors.h"
 #include "core/deformable/deformable_cost.h"
-#include "deformable/nearest_reliable.h"
 #include "prior/prior_driver.h"
 
 namespace msp {
@@ -20,11 +20,8 @@ core::ReliabilityParams ReliabilityAfter(int finished_pass, const MspStereoOptio
   return reliability;
 }
 
-DeformablePass::DeformablePass(const MspStereoOptions& msp, int num_threads, SweepEngine* engine)
-    : msp_(msp),
-      num_threads_(num_threads),
-      own_engine_(engine == nullptr ? std::make_unique<CpuSweepEngine>(num_threads) : nullptr),
-      engine_(engine == nullptr ? own_engine_.get() : engine) {}
+DeformablePass::DeformablePass(const MspStereoOptions& msp, int num_threads, SweepEngine& engine)
+    : msp_(msp), num_threads_(num_threads), engine_(&engine) {}
 
 DeformableStepReport DeformablePass::Run(const Pass& pass, const core::PassParams& params,
                                          PixelState* state) {

@@ -15,10 +15,10 @@
 #include "core/patch_match/patch_match_kernel.h"
 #include "core/prior/best_layer.h"
 #include "deformable/deformable_sweeps.h"
+#include "engine/pass_schedule.h"
+#include "engine/pixel_state.h"
+#include "engine/sweep_engine.h"
 #include "options/stereo_options.h"
-#include "patch_match/pass_schedule.h"
-#include "patch_match/pixel_state.h"
-#include "patch_match/sweep_engine.h"
 
 namespace msp {
 
@@ -43,8 +43,8 @@ class DeformablePass {
  public:
   // `num_threads` is the resolved worker count (>= 1). The per-pixel steps
   // (classification, anchor searches, sweeps) run on `engine`, which must
-  // outlive this; without one, on a CPU engine of its own.
-  DeformablePass(const MspStereoOptions& msp, int num_threads, SweepEngine* engine = nullptr);
+  // outlive this.
+  DeformablePass(const MspStereoOptions& msp, int num_threads, SweepEngine& engine);
 
   // The deformable step of `pass` on the state `params` views, which is
   // `state`'s. Takes the classes the previous pass's refinement left in
@@ -68,7 +68,6 @@ class DeformablePass {
   int num_threads_;
   std::vector<uint8_t> confining_;           // the confining bit of the current image, as 0/1
   std::vector<int> nearest_edge_;            // scratch: its nearest confining pixel of every pixel
-  std::unique_ptr<SweepEngine> own_engine_;  // when no engine was given
   SweepEngine* engine_;
   std::vector<core::PriorAnchors> prior_anchors_;
 };

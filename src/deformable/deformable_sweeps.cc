@@ -6,13 +6,13 @@
 #include <stdexcept>
 #include <utility>
 
+#include "base/nearest_marked_pixels.h"
 #include "base/parallel_for.h"
 #include "base/seconds_since.h"
 #include "core/deformable/deformable_sweep_pixel.h"
 #include "core/deformable/deformable_update.h"
 #include "core/deformable/refine_and_classify.h"
 #include "deformable/anchor_pair_cache.h"
-#include "deformable/nearest_reliable.h"
 
 namespace msp {
 namespace {

@@ -16,17 +16,9 @@
 #include "core/patch_match/patch_match_kernel.h"
 #include "core/prior/best_layer.h"
 #include "deformable/anchor_pair_cache.h"
+#include "engine/deformable_step.h"
 
 namespace msp {
-
-struct ReliabilityMaps {
-  int width = 0;
-  int height = 0;
-  std::vector<uint8_t> classes;  // core::kReliable / kUnreliable / kUnknown
-  std::vector<int> nearest;      // nearest reliable pixel index, -1 = none
-  int num_reliable = 0;
-  int num_unreliable = 0;
-};
 
 // The class of every pixel of params.state (core::ClassifyPixel), rows in
 // parallel: the CPU back-end's part of ClassifyState.
@@ -49,30 +41,6 @@ std::vector<uint8_t> LocalRefineAndClassifyState(const core::PassParams& params,
 // Counts and the nearest-reliable map of classes computed earlier.
 ReliabilityMaps MakeReliabilityMaps(std::vector<uint8_t> classes, int width, int height,
                                     int num_threads);
-
-struct DeformableSettings {
-  core::AnchorParams anchors;
-  core::DeformableParams cost;
-  // Depth edges of the segmentation prior that confine the anchor search
-  // (1 byte per pixel, nonzero = edge); data == nullptr = unconfined.
-  core::BoundaryView edges{nullptr, 0, 0, 0};
-  // The nearest edge pixel of every pixel (NearestMarkedPixels of the edges),
-  // or nullptr: lets the search skip walks that cannot reach an edge.
-  const int* nearest_edge = nullptr;
-  // Disparity-sampling synergistic 3D optimization (core/deformable/
-  // synergistic_optimization.h): random sampling solutions, optimized in
-  // the first `synergy_iterations` iterations of the pass; false = the fixed grid.
-  bool synergistic = false;
-  core::SynergyParams synergy = core::DefaultSynergyParams();
-  int synergy_iterations = 1;
-};
-
-// Statistics of one call, for the log.
-struct DeformableStats {
-  long long anchored_updates = 0;  // deformable pixel updates over all iterations
-  double anchor_seconds = 0.0;     // wall time of the anchor searches
-  double sweep_seconds = 0.0;      // wall time of the red-black sweeps
-};
 
 // The working memory of RunDeformableCheckerboardIterations, kept by the
 // caller from one call to the next (what it holds between calls means

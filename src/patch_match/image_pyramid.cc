@@ -10,16 +10,6 @@
 
 namespace msp {
 
-int NumHalvings(int width, int height, int coarsest_size) {
-  int halvings = 0;
-  int side = std::max(width, height);
-  while (side > coarsest_size) {
-    side /= 2;
-    ++halvings;
-  }
-  return halvings;
-}
-
 DenseMap DownsampleHalf(const DenseMap& image) {
   DenseMap out(image.width / 2, image.height / 2, image.channels);
   for (int c = 0; c < image.channels; ++c) {

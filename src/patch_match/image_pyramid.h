@@ -4,12 +4,9 @@
 
 #include "base/dense_map.h"
 #include "core/math/camera.h"
-#include "patch_match/pixel_state.h"
+#include "engine/pixel_state.h"
 
 namespace msp {
-
-// Number of halvings until the larger side is <= coarsest_size (0 when it already is).
-int NumHalvings(int width, int height, int coarsest_size);
 
 // 2x2 box average; odd sizes drop the last row/column.
 DenseMap DownsampleHalf(const DenseMap& image);

@@ -1,7 +1,7 @@
 // A run shared by several processes (--MspStereo.shard, --MspStereo.image_list):
 // each computes the passes of its own reference images, and the states of
 // every image after each pass go through a PassExchange that all of them
-// see (colmap_ext's SharedPassDir: files in the workspace), so that a
+// see (app/shared_pass_dir.h: files in the workspace), so that a
 // geometric pass reads its sources' previous-pass depth wherever they were
 // computed. Nothing here knows files.
 #pragma once
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/pixel_state.h"
 #include "options/shard_spec.h"
-#include "patch_match/pixel_state.h"
 
 namespace msp {
 

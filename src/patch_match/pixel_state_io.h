@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "patch_match/pixel_state.h"
+#include "engine/pixel_state.h"
 
 namespace msp {
 

@@ -14,8 +14,8 @@
 
 #include "base/dense_map.h"
 #include "base/mvs_input.h"
+#include "engine/pixel_state.h"
 #include "patch_match/pass_exchange.h"
-#include "patch_match/pixel_state.h"
 
 namespace msp {
 

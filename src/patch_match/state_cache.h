@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "patch_match/pixel_state.h"
+#include "engine/pixel_state.h"
 
 namespace msp {
 

@@ -5,7 +5,7 @@
 #include "core/patch_match/local_refine.h"
 #include "core/patch_match/output_filter.h"
 #include "core/patch_match/patch_match_kernel.h"
-#include "patch_match/pixel_state.h"
+#include "engine/pixel_state.h"
 
 namespace msp {
 

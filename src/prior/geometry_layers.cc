@@ -4,8 +4,8 @@
 #include <cassert>
 #include <cmath>
 
+#include "base/nearest_marked_pixels.h"
 #include "core/prior/geometry_feature.h"
-#include "deformable/nearest_reliable.h"
 
 namespace msp {
 namespace {

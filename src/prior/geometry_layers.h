@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "base/dense_map.h"
+#include "base/label_layers.h"
 #include "core/prior/prior_limits.h"
 #include "prior/graph_segmentation.h"
-#include "prior/label_layers.h"
 
 namespace msp {
 

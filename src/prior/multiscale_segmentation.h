@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "base/dense_map.h"
+#include "base/label_layers.h"
 #include "prior/graph_segmentation.h"
-#include "prior/label_layers.h"
 
 namespace msp {
 

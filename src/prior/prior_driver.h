@@ -16,11 +16,11 @@
 #include <vector>
 
 #include "base/dense_map.h"
+#include "base/label_layers.h"
 #include "base/mvs_input.h"
 #include "core/prior/best_layer.h"
 #include "options/stereo_options.h"
 #include "prior/graph_segmentation.h"
-#include "prior/label_layers.h"
 #include "prior/segmentation_prior.h"
 
 namespace msp {

@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/label_layers.h"
 #include "core/prior/best_layer.h"
 #include "core/prior/segment_crossing.h"
-#include "prior/label_layers.h"
 
 namespace msp {
 

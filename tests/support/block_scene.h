@@ -12,8 +12,8 @@
 #include "core/deformable/deformable_limits.h"
 #include "core/patch_match/patch_match_kernel.h"
 #include "core/prior/best_layer.h"
-#include "patch_match/pass_schedule.h"
-#include "patch_match/pixel_state.h"
+#include "engine/pass_schedule.h"
+#include "engine/pixel_state.h"
 #include "patch_match/sweeps.h"
 #include "tests/support/synthetic_views.h"
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-#include "colmap_ext/errors.h"
+#include "io/errors.h"
 
 namespace msp {
 namespace test {

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "colmap_ext/sparse_model.h"
+#include "io/sparse_model.h"
 
 namespace msp {
 namespace test {

@@ -10,7 +10,7 @@
 
 #include "base/mvs_input.h"
 #include "core/patch_match/patch_match_kernel.h"
-#include "patch_match/pixel_state.h"
+#include "engine/pixel_state.h"
 #include "tests/support/cameras.h"
 #include "tests/support/images.h"
 

@@ -1,7 +1,7 @@
 // The per-pixel bodies of the deformable iterations (docs/method.md
 // section 3), one pixel each, called by the CPU's row loops
 // (src/deformable/deformable_sweeps.cc) and by the CUDA kernels
-// (cuda/deformable_kernels.cu) alike, so both back-ends find the same
+// (src/backend/cuda/deformable_kernels.cu) alike, so both back-ends find the same
 // anchors and take the same updates.
 #pragma once
 

@@ -7,7 +7,7 @@
 #include <functional>
 #include <vector>
 
-#include "deformable/nearest_reliable.h"
+#include "base/nearest_marked_pixels.h"
 #include "tests/support/cameras.h"
 #include "tests/support/images.h"
 

@@ -9,8 +9,8 @@
 #include <functional>
 #include <vector>
 
+#include "base/nearest_marked_pixels.h"
 #include "core/deformable/anchors.h"
-#include "deformable/nearest_reliable.h"
 #include "tests/support/cameras.h"
 #include "tests/support/images.h"
 

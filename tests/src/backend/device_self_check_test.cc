@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "backend/cpu/cpu_sweep_engine.h"
 #include "core/deformable/reliability.h"
 
 // The self-check's comparison on the CPU: the CPU's engine as the device

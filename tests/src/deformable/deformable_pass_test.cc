@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "backend/cpu/cpu_sweep_engine.h"
 #include "patch_match/sweeps.h"
 #include "prior/prior_driver.h"
 #include "tests/support/block_scene.h"
@@ -58,7 +59,8 @@ TEST(DeformablePass, UnreliablePixelsWithAnchorsTakeTheDeformableUpdate) {
   s.state.classes = BlockClasses();
   Pass pass = DeformablePassWithClasses();
   pass.prior = true;
-  DeformablePass step(MspStereoOptions(), kNumThreads);
+  CpuSweepEngine step_engine(kNumThreads);
+  DeformablePass step(MspStereoOptions(), kNumThreads, step_engine);
   const DeformableStepReport report = step.Run(pass, s.params, &s.state);
   EXPECT_FALSE(report.classified);
   EXPECT_TRUE(s.state.classes.empty());  // taken by the step
@@ -85,7 +87,8 @@ TEST(DeformablePass, AnchorsAreKeptOnlyForThePrior) {
   Scene s;
   s.SetTruePlanes();
   s.state.classes = BlockClasses();
-  DeformablePass step(MspStereoOptions(), kNumThreads);
+  CpuSweepEngine step_engine(kNumThreads);
+  DeformablePass step(MspStereoOptions(), kNumThreads, step_engine);
   const DeformableStepReport report = step.Run(DeformablePassWithClasses(), s.params, &s.state);
   EXPECT_GT(report.sweeps.anchored_updates, 0);
   EXPECT_TRUE(step.prior_anchors().empty());
@@ -100,7 +103,8 @@ TEST(DeformablePass, NoReliablePixelsIsTheConventionalSweep) {
   deformable.state.classes.assign(kWidth * kHeight, core::kUnreliable);
   Pass pass = DeformablePassWithClasses();
   pass.prior = true;
-  DeformablePass step(MspStereoOptions(), kNumThreads);
+  CpuSweepEngine step_engine(kNumThreads);
+  DeformablePass step(MspStereoOptions(), kNumThreads, step_engine);
   const DeformableStepReport report = step.Run(pass, deformable.params, &deformable.state);
   EXPECT_EQ(report.num_reliable, 0);
   EXPECT_EQ(report.num_unreliable, kWidth * kHeight);
@@ -122,7 +126,8 @@ TEST(DeformablePass, ClassifiesTheStateAtARoundStart) {
   const ReliabilityMaps expected = ClassifyState(s.params, ReliabilityAfter(0, msp), kNumThreads);
   Pass pass = DeformablePassWithClasses();
   pass.classify_after = 0;
-  DeformablePass step(msp, kNumThreads);
+  CpuSweepEngine step_engine(kNumThreads);
+  DeformablePass step(msp, kNumThreads, step_engine);
   const DeformableStepReport report = step.Run(pass, s.params, &s.state);
   EXPECT_TRUE(report.classified);
   EXPECT_GT(report.num_reliable, 0);
@@ -159,8 +164,9 @@ TEST(DeformablePass, RunsItsPerPixelStepsOnTheGivenEngine) {
   Pass pass = DeformablePassWithClasses();
   pass.classify_after = 0;
   CountingEngine engine;
-  DeformablePass(MspStereoOptions(), kNumThreads, &engine).Run(pass, given.params, &given.state);
-  DeformablePass(MspStereoOptions(), kNumThreads).Run(pass, own.params, &own.state);
+  CpuSweepEngine cpu(kNumThreads);
+  DeformablePass(MspStereoOptions(), kNumThreads, engine).Run(pass, given.params, &given.state);
+  DeformablePass(MspStereoOptions(), kNumThreads, cpu).Run(pass, own.params, &own.state);
   EXPECT_EQ(engine.classified, 1);
   EXPECT_EQ(engine.iterated, 1);
   EXPECT_EQ(given.state.depth, own.state.depth);
@@ -170,7 +176,8 @@ TEST(DeformablePass, RunsItsPerPixelStepsOnTheGivenEngine) {
 TEST(DeformablePass, ScheduleAndStateMustAgree) {
   Scene s;
   s.SetTruePlanes();
-  DeformablePass step(MspStereoOptions(), kNumThreads);
+  CpuSweepEngine step_engine(kNumThreads);
+  DeformablePass step(MspStereoOptions(), kNumThreads, step_engine);
   // Classes from the previous pass expected, none in the state.
   EXPECT_THROW(step.Run(DeformablePassWithClasses(), s.params, &s.state), std::logic_error);
   // Classified at the start, yet the state has classes.
@@ -201,10 +208,12 @@ TEST(DeformablePass, EquidistributionOffIsTheFixedSectorSearch) {
   msp.disassemble_clustering = false;  // the direct sweeps run APD's anchors
   msp.synergistic_optimization = false;
   msp.equidistribution = false;
-  DeformablePass off_step(msp, kNumThreads);
+  CpuSweepEngine off_step_engine(kNumThreads);
+  DeformablePass off_step(msp, kNumThreads, off_step_engine);
   off_step.Run(pass, off.params, &off.state);
   msp.equidistribution = true;
-  DeformablePass on_step(msp, kNumThreads);
+  CpuSweepEngine on_step_engine(kNumThreads);
+  DeformablePass on_step(msp, kNumThreads, on_step_engine);
   on_step.Run(pass, on.params, &on.state);
 
   const ReliabilityMaps maps = MakeReliabilityMaps(BlockClasses(), kWidth, kHeight, kNumThreads);
@@ -239,7 +248,8 @@ TEST(DeformablePass, OnlyConfiningEdgesConfineTheAnchors) {
     s.SetTruePlanes();
     s.state.classes = BlockClasses();
     s.state.edges = edges[k];
-    DeformablePass step(MspStereoOptions(), kNumThreads);
+    CpuSweepEngine step_engine(kNumThreads);
+    DeformablePass step(MspStereoOptions(), kNumThreads, step_engine);
     anchored[k] = step.Run(DeformablePassWithClasses(), s.params, &s.state).sweeps.anchored_updates;
   }
   EXPECT_GT(anchored[0], 0);
@@ -302,7 +312,8 @@ void RunFromRandomPlanes(const MspStereoOptions& msp, Scene* s) {
   ASSERT_LT(start.share_near, 0.5 * kMinShareNearPlane);  // far from the plane at the start
   ASSERT_GT(start.mean, 2.0 * kMaxMeanError);
   s->state.classes = BlockClasses();
-  DeformablePass step(msp, kNumThreads);
+  CpuSweepEngine step_engine(kNumThreads);
+  DeformablePass step(msp, kNumThreads, step_engine);
   const DeformableStepReport report = step.Run(DeformablePassWithClasses(), s->params, &s->state);
   EXPECT_GT(report.sweeps.anchored_updates, 0);
   const BlockError end = BlockDepthError(s->state);

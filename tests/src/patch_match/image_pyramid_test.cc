@@ -11,12 +11,6 @@
 namespace msp {
 namespace {
 
-TEST(ImagePyramid, NumHalvings) {
-  EXPECT_EQ(NumHalvings(640, 480, 1000), 0);
-  EXPECT_EQ(NumHalvings(1536, 1024, 1000), 1);
-  EXPECT_EQ(NumHalvings(4000, 3000, 1000), 2);
-}
-
 TEST(ImagePyramid, DownsampleAveragesBlocks) {
   DenseMap image(5, 4, 1);
   for (int r = 0; r < 4; ++r) {

@@ -24,11 +24,15 @@ std::string AttributeName(const std::string& option_name) {
 // The attributes of a struct and their help texts, in usage order.
 class FieldList : public OptionVisitor {
  public:
-  void Visit(const std::string& name, int*, const std::string& help, OptionGroup) override { Add(name, help); }
+  void Visit(const std::string& name, int*, const std::string& help, OptionGroup) override {
+    Add(name, help);
+  }
   void Visit(const std::string& name, double*, const std::string& help, OptionGroup) override {
     Add(name, help);
   }
-  void Visit(const std::string& name, bool*, const std::string& help, OptionGroup) override { Add(name, help); }
+  void Visit(const std::string& name, bool*, const std::string& help, OptionGroup) override {
+    Add(name, help);
+  }
   void Visit(const std::string& name, std::string*, const std::string& help, OptionGroup) override {
     Add(name, help);
   }
@@ -58,7 +62,8 @@ class FieldAccess : public OptionVisitor {
   void Visit(const std::string& name, bool* field, const std::string&, OptionGroup) override {
     Access(name, field, "a bool");
   }
-  void Visit(const std::string& name, std::string* field, const std::string&, OptionGroup) override {
+  void Visit(const std::string& name, std::string* field, const std::string&,
+             OptionGroup) override {
     Access(name, field, "a str");
   }
 

@@ -36,8 +36,9 @@ class DeviceQuery {
   virtual ~DeviceQuery() = default;
   // False when this msp_stereo was built without the CUDA back-end.
   virtual bool CudaBuilt() const = 0;
-  // The devices present; when there are none, *why_none says why (e.g. the
-  // runtime's error for a machine without a driver).
+  // The devices present that can be opened; never throws. *why_none says why
+  // there are none (e.g. the runtime's error for a machine without a driver)
+  // and names each listed device that could not be opened.
   virtual std::vector<DeviceInfo> Devices(std::string* why_none) const = 0;
   // Runs the self-check on `device` (one of Devices()); never throws: a
   // CUDA error is a failed check whose figures name the error.

@@ -66,8 +66,8 @@ class DeformablePass {
 
   MspStereoOptions msp_;
   int num_threads_;
-  std::vector<uint8_t> confining_;           // the confining bit of the current image, as 0/1
-  std::vector<int> nearest_edge_;            // scratch: its nearest confining pixel of every pixel
+  std::vector<uint8_t> confining_;  // the confining bit of the current image, as 0/1
+  std::vector<int> nearest_edge_;   // scratch: its nearest confining pixel of every pixel
   SweepEngine* engine_;
   std::vector<core::PriorAnchors> prior_anchors_;
 };

@@ -72,7 +72,7 @@ struct Pass {
   // pass) for the next pass of the round.
   bool refine_classifies = false;
   bool segment_planes = false;  // segments offer their planes after the refinement
-  bool prior = false;  // the segmentation prior runs after the pass
+  bool prior = false;           // the segmentation prior runs after the pass
   PassOutput output = PassOutput::kNone;
   bool prior_preview = false;  // writes the prior preview (with kFinal)
   bool map_previews = false;   // writes the pictures of the final maps (with kFinal)

@@ -551,13 +551,15 @@ class NameCollector : public OptionVisitor {
   void Visit(const std::string& name, int* field, const std::string& help, OptionGroup) override {
     Add(name, field, help);
   }
-  void Visit(const std::string& name, double* field, const std::string& help, OptionGroup) override {
+  void Visit(const std::string& name, double* field, const std::string& help,
+             OptionGroup) override {
     Add(name, field, help);
   }
   void Visit(const std::string& name, bool* field, const std::string& help, OptionGroup) override {
     Add(name, field, help);
   }
-  void Visit(const std::string& name, std::string* field, const std::string& help, OptionGroup) override {
+  void Visit(const std::string& name, std::string* field, const std::string& help,
+             OptionGroup) override {
     Add(name, field, help);
   }
   std::vector<std::string> names;

@@ -12,6 +12,7 @@
 #include <map>
 #include <vector>
 
+#include "deformable/deformable_sweeps.h"
 #include "engine/sweep_engine.h"
 
 namespace msp {

@@ -35,7 +35,18 @@ class CudaDeviceQuery : public DeviceQuery {
     }
     if (count == 0) *why_none = "cudaGetDeviceCount found 0 devices";
     std::vector<DeviceInfo> devices;
-    for (int d = 0; d < count; ++d) devices.push_back(Describe(d));
+    for (int d = 0; d < count; ++d) {
+      // A device the runtime lists but cannot open (a driver too old for
+      // this build, a device in use exclusively) is left out, with why, so
+      // that auto falls back to the CPU instead of stopping.
+      try {
+        devices.push_back(Describe(d));
+      } catch (const std::exception& e) {
+        cudaGetLastError();
+        if (!why_none->empty()) *why_none += "; ";
+        *why_none += "device " + std::to_string(d) + ": " + e.what();
+      }
+    }
     return devices;
   }
 

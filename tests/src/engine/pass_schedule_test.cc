@@ -16,7 +16,6 @@ TEST(PassSchedule, NumHalvings) {
   EXPECT_EQ(NumHalvings(4000, 3000, 1000), 2);
 }
 
-
 // The default options with deformable patches on (off by default), whose
 // schedule and outputs these tests pin down.
 MspStereoOptions WithDeformable() {

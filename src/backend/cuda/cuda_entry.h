@@ -1,5 +1,5 @@
-// The CUDA back-end's entry point: defined in cuda/ when nvcc built it, else
-// by backend/cuda/no_cuda.cc (which also gives the query that reports no CUDA).
+// The CUDA back-end's entry point: defined in cuda_entry.cc when nvcc built it, else
+// by no_cuda.cc (which also gives the query that reports no CUDA).
 #pragma once
 
 #include <string>

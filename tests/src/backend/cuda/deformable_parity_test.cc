@@ -51,7 +51,7 @@ struct StepResult {
 StepResult RunStep(const MspStereoOptions& msp, SweepEngine* engine, test::BlockScene* s) {
   Pass pass = test::DeformablePassWithClasses();
   pass.prior = true;
-  DeformablePass step(msp, 1, engine);
+  DeformablePass step(msp, 1, *engine);
   StepResult result;
   result.anchored_updates = step.Run(pass, s->params, &s->state).sweeps.anchored_updates;
   result.prior_anchors = step.prior_anchors();

@@ -1,8 +1,15 @@
 // The bundled scene at 320x240 through both back-ends with the same seed: the
-// final (geometric, filtered) maps must agree. The CUDA back-end runs the CPU
-// back-end's schedule with the GPU's sweeps, so the maps differ only where a
-// near tie between two candidates flipped (sweep_parity_test.cc) and the
-// change spread through propagation; the tolerances below bound that.
+// final (geometric, filtered) maps must be as good and mostly the same. The
+// CUDA back-end runs the CPU back-end's schedule with the GPU's sweeps, so the
+// maps differ where a near tie between two candidates flipped
+// (sweep_parity_test.cc) and the change spread through propagation: on the
+// blank walls that is much of the image. Two correct CPU cores (AVX2 and the
+// scalar branches the kernels run, tests/scalar_vs_vector.sh) on this scene
+// and seed share a depth on 81-89 % of the pixels either has, agree within
+// 1 % on 78-82 % of those, and put the same share of each image within 1 % of
+// the ground truth to 1.2 points (0.6 on the mean): the bounds below leave
+// room for the device's own rounding and fail a device whose maps are worse,
+// not only different.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +21,8 @@
 
 #include "backend/cpu/cpu_entry.h"
 #include "backend/cuda/cuda_entry.h"
+#include "io/dense_map_io.h"
+#include "io/ground_truth.h"
 #include "io/workspace.h"
 #include "patch_match/pass_runner.h"
 #include "tests/src/backend/cuda/gpu_skip.h"
@@ -24,10 +33,28 @@ namespace msp {
 namespace {
 
 // Pixels with a depth in either map: at least this share has one in both...
-constexpr double kMinSharedValidShare = 0.95;
+constexpr double kMinSharedValidShare = 0.70;
 // ...and of those, at least this share agrees within kDepthTolerance (relative).
-constexpr double kMinAgreeingShare = 0.95;
+constexpr double kMinAgreeingShare = 0.65;
 constexpr double kDepthTolerance = 0.01;
+// The share of an image's ground-truth pixels within kDepthTolerance of the
+// truth: the device's may differ from the CPU's by this much per image, and
+// by kMaxMeanQualityGap on the mean over the images.
+constexpr double kMaxQualityGap = 0.04;
+constexpr double kMaxMeanQualityGap = 0.02;
+
+// The share of the pixels with a true depth whose depth in `map` is within
+// kDepthTolerance of it.
+double ShareWithinTolerance(const DenseMap& map, const DenseMap& truth) {
+  int measured = 0, within = 0;
+  for (size_t i = 0; i < truth.data.size(); ++i) {
+    if (truth.data[i] <= 0.0f) continue;
+    ++measured;
+    within += map.data[i] > 0.0f &&
+              std::fabs(map.data[i] - truth.data[i]) <= kDepthTolerance * truth.data[i];
+  }
+  return static_cast<double>(within) / std::max(measured, 1);
+}
 
 class MemorySink : public MapSink {
  public:
@@ -39,7 +66,7 @@ class MemorySink : public MapSink {
   std::map<std::pair<int, std::string>, std::pair<DenseMap, DenseMap>> maps;
 };
 
-TEST(SceneParity, BundledSceneAt320x240GivesTheSameMapsOnBothBackEnds) {
+TEST(SceneParity, BundledSceneAt320x240GivesMapsAsGoodOnBothBackEnds) {
   MSP_SKIP_WITHOUT_GPU();
   test::TempDir dir;
   scene::GeneratorOptions generator;
@@ -62,9 +89,13 @@ TEST(SceneParity, BundledSceneAt320x240GivesTheSameMapsOnBothBackEnds) {
                     gpu, {devices.front()});
 
   ASSERT_EQ(cpu.maps.size(), gpu.maps.size());
+  const GroundTruthInfo truth = ReadGroundTruthInfo(GroundTruthDir(generator.output, ""));
+  double cpu_quality = 0.0, gpu_quality = 0.0;
+  int num_images = 0;
   for (const auto& entry : cpu.maps) {
     if (entry.first.second != "geometric") continue;
-    ASSERT_TRUE(gpu.maps.count(entry.first)) << ws.views[entry.first.first].name;
+    const std::string name = ws.views[entry.first.first].name;
+    ASSERT_TRUE(gpu.maps.count(entry.first)) << name;
     const DenseMap& a = entry.second.first;
     const DenseMap& b = gpu.maps.at(entry.first).first;
     ASSERT_EQ(a.data.size(), b.data.size());
@@ -75,11 +106,24 @@ TEST(SceneParity, BundledSceneAt320x240GivesTheSameMapsOnBothBackEnds) {
       both += va && vb;
       agree += va && vb && std::fabs(a.data[i] - b.data[i]) <= kDepthTolerance * a.data[i];
     }
-    const std::string name = ws.views[entry.first.first].name;
     ASSERT_GT(either, 0) << name;
     EXPECT_GE(static_cast<double>(both) / either, kMinSharedValidShare) << name;
     EXPECT_GE(static_cast<double>(agree) / std::max(both, 1), kMinAgreeingShare) << name;
+
+    const DenseMap true_depth = ReadDenseMap(truth.DepthMapPath(name));
+    ASSERT_EQ(true_depth.data.size(), a.data.size()) << name;
+    const double cpu_share = ShareWithinTolerance(a, true_depth);
+    const double gpu_share = ShareWithinTolerance(b, true_depth);
+    EXPECT_LE(std::fabs(gpu_share - cpu_share), kMaxQualityGap)
+        << name << ": within 1 % of the truth, CPU " << cpu_share << ", GPU " << gpu_share;
+    cpu_quality += cpu_share;
+    gpu_quality += gpu_share;
+    ++num_images;
   }
+  ASSERT_GT(num_images, 0);
+  EXPECT_LE(std::fabs(gpu_quality - cpu_quality) / num_images, kMaxMeanQualityGap)
+      << "mean share within 1 % of the truth, CPU " << cpu_quality / num_images << ", GPU "
+      << gpu_quality / num_images;
 }
 
 }  // namespace

@@ -7,7 +7,6 @@
 #include "backend/cuda/cuda_entry.h"
 #include "backend/device_memory.h"
 #include "base/log.h"
-#include "patch_match/pass_runner.h"
 
 namespace msp {
 

@@ -76,8 +76,10 @@ class ParityTest(unittest.TestCase):
     def test_maps_are_the_programs_byte_for_byte(self):
         options = msp_stereo.PatchMatchOptions(max_image_size=160, num_threads=2)
         msp_options = msp_stereo.MspStereoOptions()
+        # Not the default seed, so that the maps show the seed reached the run.
+        seed = 3
         program_ws = support.copy_workspace(self.scene, self.scratch.path / "program")
-        result = support.run_program(program_ws, options, msp_options)
+        result = support.run_program(program_ws, options, msp_options, random_seed=seed)
         self.assertEqual(result.returncode, 0, result.stderr)
 
         python_ws = support.copy_workspace(self.scene, self.scratch.path / "python")
@@ -89,7 +91,7 @@ class ParityTest(unittest.TestCase):
         ticker = Ticker()
         try:
             msp_stereo.patch_match_stereo(
-                str(python_ws), options=options, msp_options=msp_options,
+                str(python_ws), options=options, msp_options=msp_options, random_seed=seed,
                 progress=lambda done, total, seconds_left: progress.append(
                     (done, total, seconds_left)))
         finally:

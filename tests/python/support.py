@@ -61,9 +61,10 @@ def option_words(options):
     return words
 
 
-def run_program(workspace, options, msp_options):
+def run_program(workspace, options, msp_options, random_seed=0):
     """msp_stereo on `workspace` with the options of the Python objects."""
-    return subprocess.run([str(BIN_DIR / "msp_stereo"), "--workspace_path", str(workspace)] +
+    return subprocess.run([str(BIN_DIR / "msp_stereo"), "--workspace_path", str(workspace),
+                           "--random_seed", str(random_seed)] +
                           option_words(options) + option_words(msp_options),
                           capture_output=True, text=True)
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 
 #include "options/option_parser.h"
@@ -13,6 +14,14 @@ namespace {
 
 namespace po = boost::program_options;
 
+// Reads the substitutions of an error (a protected member of boost's base
+// class): they hold the text that came from the input.
+struct SubstitutionsOf : po::error_with_option_name {
+  static const std::map<std::string, std::string>& Of(const po::error_with_option_name& error) {
+    return error.*(&SubstitutionsOf::m_substitutions);
+  }
+};
+
 [[noreturn]] void ThrowOptionError(const po::error& error) {
   if (const auto* unknown = dynamic_cast<const po::unknown_option*>(&error)) {
     throw OptionError("unknown option `" + unknown->get_option_name() +
@@ -21,10 +30,22 @@ namespace po = boost::program_options;
   if (const auto* required = dynamic_cast<const po::required_option*>(&error)) {
     throw OptionError("missing required option " + required->get_option_name());
   }
-  throw OptionError(error.what());
+  throw OptionError(ErrorText(error));
 }
 
 }  // namespace
+
+std::string ErrorText(const po::error& error) {
+  const auto* named = dynamic_cast<const po::error_with_option_name*>(&error);
+  if (named == nullptr) return error.what();
+  po::error_with_option_name safe(*named);
+  for (const auto& [key, value] : SubstitutionsOf::Of(*named)) {
+    std::string text = value;
+    std::replace(text.begin(), text.end(), '%', '?');
+    safe.set_substitute(key, text);
+  }
+  return safe.what();
+}
 
 std::string ValueText(const std::string& value) { return value; }
 std::string ValueText(bool value) { return value ? "true" : "false"; }

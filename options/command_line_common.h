@@ -32,6 +32,12 @@ std::string DefaultText(const T& value) {
   return text.empty() ? "\"\"" : text;
 }
 
+// The message of one of boost's errors. Boost fills an error's placeholders
+// (%value%, %option%, ...) until none is left, so a value that holds its own
+// placeholder (an ini line `log_to_stderr=x %value%`) would never end; here
+// every '%' of what the input put into the message reads '?'.
+std::string ErrorText(const boost::program_options::error& error);
+
 // Lists -h / --help in a help text.
 void AddHelpOption(boost::program_options::options_description* description);
 

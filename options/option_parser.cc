@@ -76,7 +76,7 @@ void StoreIniFile(const std::string& path, const OptionTable& table, po::variabl
   try {
     parsed = po::parse_config_file(file, description, /*allow_unregistered=*/true);
   } catch (const po::error& e) {
-    throw OptionError("in " + in_file + ": " + e.what());
+    throw OptionError("in " + in_file + ": " + command_line::ErrorText(e));
   }
   std::vector<po::option> known;
   for (const po::option& option : parsed.options) {
@@ -100,7 +100,7 @@ void StoreIniFile(const std::string& path, const OptionTable& table, po::variabl
   try {
     po::store(parsed, *vm);
   } catch (const po::error& e) {
-    throw OptionError("in " + in_file + ": " + e.what());
+    throw OptionError("in " + in_file + ": " + command_line::ErrorText(e));
   }
 }
 

@@ -330,6 +330,21 @@ TEST(OptionParser, IniErrorsNameTheProblem) {
       std::string::npos);
 }
 
+// Boost fills an error's placeholders until none is left: a value holding its
+// own placeholder hung the parser (found by project_ini_fuzzer). The message
+// comes at once, the value's '%' read as '?'.
+TEST(OptionParser, ValuesThatLookLikePlaceholdersGiveAMessage) {
+  const IniFile ini("workspace_path=w\nlog_to_stderr=false ('%value%')\n");
+  const std::string in_ini = ParseError({"--project_path", ini.path()});
+  EXPECT_NE(in_ini.find("false ('?value?')"), std::string::npos) << in_ini;
+  EXPECT_NE(in_ini.find("log_to_stderr"), std::string::npos) << in_ini;
+  const std::string on_command_line =
+      ParseError({"--workspace_path", "w", "--PatchMatchStereo.window_radius", "%value%5"});
+  EXPECT_NE(on_command_line.find("?value?5"), std::string::npos) << on_command_line;
+  const std::string in_name = ParseError({"--workspace_path", "w", "--x%option%", "1"});
+  EXPECT_NE(in_name.find("x%option%"), std::string::npos) << in_name;
+}
+
 TEST(OptionParser, UnknownOptionIsNamed) {
   const std::string error =
       ParseError({"--workspace_path", "w", "--PatchMatchStereo.window_size", "3"});

@@ -136,13 +136,13 @@ ParseStatus ParseStereoCommand(int argc, const char* const argv[], StereoCommand
     throw OptionError("missing required option " + MSP_OPTION_FLAG(*options, workspace_path));
   }
   ApplySharedOptions(options);
-  options->workspace_format = ToUpper(options->workspace_format);
   return ParseStatus::kRun;
 }
 
 void ApplySharedOptions(StereoCommandOptions* options) {
   options->msp.seed = options->random_seed;
   options->msp.num_threads = options->patch_match.num_threads;
+  options->workspace_format = ToUpper(options->workspace_format);
 }
 
 std::string StereoCommandUsage(UsageScope scope) {

@@ -44,17 +44,15 @@ enum class UsageScope { kCommonOptions, kAllOptions };
 // `options`, which must hold the defaults on entry. Throws OptionError for an
 // unknown option, an option of an earlier version that was renamed (the
 // message names the new one), a malformed value, an unreadable ini file or a
-// missing --workspace_path. --random_seed and --PatchMatchStereo.num_threads
-// are also copied into options->msp (seed, num_threads), which the back-ends
-// read. Value ranges are not checked here: see option_check.h.
-// --workspace_format is normalised to upper case (COLMAP compares it
-// case-insensitively).
+// missing --workspace_path; then ApplySharedOptions. Value ranges are not
+// checked here: see option_check.h.
 ParseStatus ParseStereoCommand(int argc, const char* const argv[], StereoCommandOptions* options);
 
 // Copies the options COLMAP gives at the command's level into the fields the
-// back-ends read: --random_seed into msp.seed, --PatchMatchStereo.num_threads
-// into msp.num_threads. ParseStereoCommand calls it; so does any other way of
-// filling StereoCommandOptions (the Python module).
+// back-ends read (--random_seed into msp.seed, --PatchMatchStereo.num_threads
+// into msp.num_threads) and writes --workspace_format in upper case (COLMAP
+// compares it case-insensitively). ParseStereoCommand calls it; so does any
+// other way of filling StereoCommandOptions (the Python module).
 void ApplySharedOptions(StereoCommandOptions* options);
 
 // Usage text listing the options of `scope` with their defaults and help

@@ -3,8 +3,6 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include <algorithm>
-#include <cctype>
 #include <csignal>
 #include <filesystem>
 #include <mutex>
@@ -62,12 +60,6 @@ class ProgressBridge {
   ProgressBridge& operator=(const ProgressBridge&) = delete;
 };
 
-std::string ToUpper(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char ch) { return static_cast<char>(std::toupper(ch)); });
-  return text;
-}
-
 void PatchMatchStereo(const std::filesystem::path& workspace_path,
                       const std::string& workspace_format, const std::string& pmvs_option_name,
                       const std::filesystem::path& config_path,
@@ -84,8 +76,7 @@ void PatchMatchStereo(const std::filesystem::path& workspace_path,
   }
   StereoCommandOptions command;
   command.workspace_path = workspace_path.string();
-  // As the command line parser does: COLMAP compares it case-insensitively.
-  command.workspace_format = ToUpper(workspace_format);
+  command.workspace_format = workspace_format;
   command.pmvs_option_name = pmvs_option_name;
   command.config_path = config_path.string();
   if (options) command.patch_match = *options;

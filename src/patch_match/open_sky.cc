@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "base/pixel_neighbours.h"
 #include "core/patch_match/segment_plane.h"
 #include "core/patch_match/window_texture.h"
 
@@ -71,16 +72,14 @@ void CountOutlines(const core::PassParams& params, const std::vector<int32_t>& l
     for (int col = 0; col < s.width; ++col) {
       const int id = labels[s.Index(col, row)];
       if (id <= 0 || !candidate[id] || !planes[id].accepted) continue;
-      const int nc[4] = {col - 1, col + 1, col, col};
-      const int nr[4] = {row, row, row - 1, row + 1};
-      for (int k = 0; k < 4; ++k) {
-        if (nc[k] < 0 || nr[k] < 0 || nc[k] >= s.width || nr[k] >= s.height) continue;
-        const int other = labels[s.Index(nc[k], nr[k])];
-        if (other <= 0 || other == id) continue;
+      VisitNeighbours4(s.width, s.height, col, row, [&](int c, int r) {
+        const int other = labels[s.Index(c, r)];
+        if (other <= 0 || other == id) return false;
         SegmentStats& segment = (*stats)[id];
         ++segment.outline;
-        segment.outline_on_plane += HoldsPlane(params, nc[k], nr[k], planes[id]);
-      }
+        segment.outline_on_plane += HoldsPlane(params, c, r, planes[id]);
+        return false;
+      });
     }
   }
 }
@@ -99,15 +98,13 @@ void TakeMixedPixels(const core::PassParams& params, const std::vector<int32_t>&
         const int i = s.Index(col, row);
         if ((*sky_of)[i] > 0 || labels[i] <= 0) continue;
         const double grey = params.ref_image.At(col, row);
-        const int nc[4] = {col - 1, col + 1, col, col};
-        const int nr[4] = {row, row, row - 1, row + 1};
-        for (int k = 0; k < 4 && grown[i] == 0; ++k) {
-          if (nc[k] < 0 || nr[k] < 0 || nc[k] >= s.width || nr[k] >= s.height) continue;
-          const int id = (*sky_of)[s.Index(nc[k], nr[k])];
+        VisitNeighbours4(s.width, s.height, col, row, [&](int c, int r) {
+          const int id = (*sky_of)[s.Index(c, r)];
           if (id > 0 && std::fabs(grey - mean_grey(id)) < std::fabs(grey - mean_grey(labels[i]))) {
             grown[i] = id;
           }
-        }
+          return grown[i] != 0;
+        });
       }
     }
     sky_of->swap(grown);

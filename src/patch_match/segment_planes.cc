@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "base/parallel_for.h"
+#include "base/pixel_neighbours.h"
 #include "core/math/plane.h"
 #include "core/math/rng.h"
 #include "core/patch_match/geometric_cost.h"
@@ -138,7 +139,6 @@ bool Spans(const std::vector<PixelPosition>& positions, double segment_spread) {
 
 // RANSAC over triples of the support, scored on an even subsample of large
 // supports, then a least-squares refit on the inliers and the checks.
-
 SegmentPlane FitOnePlane(const core::PassParams& p, float focal_baseline,
                          const std::vector<SupportPoint>& support, double segment_spread,
                          uint64_t key) {
@@ -192,17 +192,16 @@ SegmentPlane FitOnePlane(const core::PassParams& p, float focal_baseline,
 bool Borrowed(const core::PassParams& p, float focal_baseline, const std::vector<int32_t>& labels,
               const std::vector<SegmentPlane>& fitted, int id, const SupportPoint& s) {
   const core::PixelStateView& state = p.state;
-  const int nc[5] = {s.col, s.col - 1, s.col + 1, s.col, s.col};
-  const int nr[5] = {s.row, s.row, s.row, s.row - 1, s.row + 1};
-  for (int k = 0; k < 5; ++k) {
-    if (nc[k] < 0 || nr[k] < 0 || nc[k] >= state.width || nr[k] >= state.height) continue;
-    const int other = labels[state.Index(nc[k], nr[k])];
-    if (other <= 0 || other == id || fitted[other].num_inliers < kMinInliers) continue;
+  // Whether the segment at (col, row) owns the same plane with s among its inliers.
+  const auto owned_there = [&](int col, int row) {
+    const int other = labels[state.Index(col, row)];
+    if (other <= 0 || other == id || fitted[other].num_inliers < kMinInliers) return false;
     const SegmentPlane& plane = fitted[other];
-    if (std::fabs(core::Dot(plane.normal, fitted[id].normal)) < kSamePlaneCos) continue;
-    if (IsInlier(p, focal_baseline, s, plane.normal, plane.point)) return true;
-  }
-  return false;
+    if (std::fabs(core::Dot(plane.normal, fitted[id].normal)) < kSamePlaneCos) return false;
+    return IsInlier(p, focal_baseline, s, plane.normal, plane.point);
+  };
+  return owned_there(s.col, s.row) ||
+         VisitNeighbours4(state.width, state.height, s.col, s.row, owned_there);
 }
 
 }  // namespace
@@ -228,15 +227,15 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
       // segments on both sides: a crease lies on both planes.
       int added[5];
       int num_added = 0;
-      const int nc[5] = {col, col - 1, col + 1, col, col};
-      const int nr[5] = {row, row, row, row - 1, row + 1};
-      for (int k = 0; k < 5; ++k) {
-        if (nc[k] < 0 || nr[k] < 0 || nc[k] >= s.width || nr[k] >= s.height) continue;
-        const int id = labels[s.Index(nc[k], nr[k])];
-        if (id <= 0 || std::find(added, added + num_added, id) != added + num_added) continue;
+      const auto add = [&](int c, int r) {
+        const int id = labels[s.Index(c, r)];
+        if (id <= 0 || std::find(added, added + num_added, id) != added + num_added) return false;
         added[num_added++] = id;
         support[id].push_back({col, row, X});
-      }
+        return false;
+      };
+      add(col, row);
+      VisitNeighbours4(s.width, s.height, col, row, add);
     }
   }
   const float focal_baseline = params.ref_camera.fx * core::MeanBaseline(params, 0u);

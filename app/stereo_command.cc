@@ -69,8 +69,8 @@ void WarnAboutIgnoredOptions(const StereoCommandOptions& options) {
     LogWarning(MSP_OPTION_FLAG(p, num_iterations) + " is ignored (the APD schedule runs " +
                MSP_OPTION_FLAG(m, advanced_iterations) +
                " red-black iterations per pass: one photometric pass and, with " +
-               MSP_OPTION_FLAG(p, geom_consistency) + ", " + MSP_OPTION_FLAG(m, advanced_geometric_passes) +
-               " geometric passes per round)");
+               MSP_OPTION_FLAG(p, geom_consistency) + ", " +
+               MSP_OPTION_FLAG(m, advanced_geometric_passes) + " geometric passes per round)");
   }
   if (p.ncc_sigma != defaults.ncc_sigma ||
       p.incident_angle_sigma != defaults.incident_angle_sigma) {

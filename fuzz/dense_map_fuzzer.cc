@@ -8,8 +8,8 @@
 #include "io/errors.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string path = msp::fuzz::WriteInputFile(
-      "map.bin", std::string(reinterpret_cast<const char*>(data), size));
+  const std::string path =
+      msp::fuzz::WriteInputFile("map.bin", std::string(reinterpret_cast<const char*>(data), size));
   try {
     msp::ReadDenseMap(path);
   } catch (const msp::InputError&) {

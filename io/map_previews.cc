@@ -69,9 +69,8 @@ RgbImage ErrorPreview(const DenseMap& depth, const DenseMap& gt_depth, const dou
     const int gt_row = NearestGroundTruthIndex(row, depth.height, gt_depth.height);
     for (int col = 0; col < depth.width; ++col) {
       const int gt_col = NearestGroundTruthIndex(col, depth.width, gt_depth.width);
-      image.At(row, col) = DepthErrorColor(
-          ClassifyDepthError(depth.At(row, col), gt_depth.At(gt_row, gt_col), thresholds,
-                             zero_is_empty));
+      image.At(row, col) = DepthErrorColor(ClassifyDepthError(
+          depth.At(row, col), gt_depth.At(gt_row, gt_col), thresholds, zero_is_empty));
     }
   }
   return image;

@@ -112,7 +112,7 @@ struct MspStereoOptions {
   bool bilateral_ncc = false;
   // Deformable patches of APD-MVS, and with them every part MSP-MVS adds (prior, eq. 7,
   // clustering, 3D optimization): unreliable pixels match over reliable anchors. Off by default:
-  // on the benchmarks it has not paid yet (docs/method.md section 9); false = the conventional core.
+  // it has not paid on the benchmarks (docs/method.md section 9); false = the conventional core.
   bool deformable = false;
   // After each pass, matched edge pixels give each colour segment a plane that its textureless
   // pixels take (docs/method.md section 2.10); false = no segment planes.

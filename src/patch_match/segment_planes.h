@@ -34,9 +34,9 @@ struct SegmentPlane {
 
 struct SegmentPlanesReport {
   int num_segments = 0;
-  int num_planes = 0;   // segments whose plane passed the checks
-  int num_offered = 0;  // pixels in those segments
-  int num_taken = 0;    // pixels that took the segment's plane
+  int num_planes = 0;    // segments whose plane passed the checks
+  int num_offered = 0;   // pixels in those segments
+  int num_taken = 0;     // pixels that took the segment's plane
   int num_open_sky = 0;  // pixels of open-sky segments (their maps are left empty)
 };
 

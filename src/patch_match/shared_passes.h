@@ -45,8 +45,7 @@ class SharedPasses {
   // Adds to `depths` the depth after pass `pass` of each of `sources` that is
   // a reference image and not in `depths` yet (another process's: this
   // process's own are in its memory).
-  void AddSourceDepths(int pass, const std::vector<int>& sources,
-                       std::map<int, DenseMap>* depths);
+  void AddSourceDepths(int pass, const std::vector<int>& sources, std::map<int, DenseMap>* depths);
 
   // After the last pass: when every problem's image has its final maps
   // (`has_final(view)`), the saved states are removed; true when they were.

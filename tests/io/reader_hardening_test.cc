@@ -39,8 +39,9 @@ TEST(ReaderHardening, MaskLayerDeclaringAHugeImageIsRefusedFromItsHeader) {
   TempDir dir;
   const std::string path = MaskLayerPath(dir.path(), "a.png", 0);
   test::WriteRaw(path, HugePng());
-  const std::string message = InputErrorMessage(
-      [&] { ReadMaskLayers(dir.path(), MaskImage{"a.png", 16, 12, 16, 12}, 1); });
+  const std::string message = InputErrorMessage([&] {
+    ReadMaskLayers(dir.path(), MaskImage{"a.png", 16, 12, 16, 12}, 1);
+  });
   EXPECT_NE(message.find(path + ": mask layer is 40000x20000 but its image a.png is 16x12"),
             std::string::npos)
       << message;

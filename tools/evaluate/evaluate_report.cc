@@ -174,9 +174,9 @@ void JsonMap(std::ostringstream& s, const GroundTruthInfo& info, const DepthMapM
   }
   s << ", \"empty\": ";
   if (info.ZeroDepthIsEmpty()) {
-    s << "{\"num_empty\": " << m.empty.num_empty << ", \"num_with_depth\": "
-      << m.empty.num_with_depth << ", \"with_depth_fraction\": " << m.empty.with_depth_fraction
-      << "}";
+    s << "{\"num_empty\": " << m.empty.num_empty
+      << ", \"num_with_depth\": " << m.empty.num_with_depth
+      << ", \"with_depth_fraction\": " << m.empty.with_depth_fraction << "}";
   } else {
     s << "null";
   }

@@ -249,9 +249,8 @@ TEST(Equidistribution, IteratedSectorsFaceEqualCounts) {
   for (int iterations = 1; iterations <= kMaxEquidistributionIterations; ++iterations) {
     float boundaries[kNumSectors];
     CumulativeCount count;
-    ASSERT_TRUE(
-        EquidistributedBoundaries(maps, kCol, kRow, kMaxDistance, iterations,
-                                  RecutWhere::kEverywhere, boundaries, &count));
+    ASSERT_TRUE(EquidistributedBoundaries(maps, kCol, kRow, kMaxDistance, iterations,
+                                          RecutWhere::kEverywhere, boundaries, &count));
     spread[iterations] = Spread(FrontCounts(maps, boundaries, everywhere));
   }
   // Measured: fixed 0.55; 0.23, 0.13, 0.10 after 1, 2, 3 re-cuts (a sector

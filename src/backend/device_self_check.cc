@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <exception>
 #include <stdexcept>
 #include <string>
@@ -11,6 +10,7 @@
 
 #include "backend/cpu/cpu_sweep_engine.h"
 #include "backend/self_check_problem.h"
+#include "base/string_printf.h"
 #include "core/deformable/reliability.h"
 #include "deformable/deformable_pass.h"
 #include "engine/pass_schedule.h"
@@ -61,11 +61,7 @@ bool SamePixel(const PixelState& a, const PixelState& b, size_t i) {
   return Within(a.cost[i], b.cost[i], kSelfCheckCostTolerance);
 }
 
-std::string Percent(double share) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.2f %%", 100.0 * share);
-  return text;
-}
+std::string Percent(double share) { return StringPrintf("%.2f %%", 100.0 * share); }
 
 }  // namespace
 

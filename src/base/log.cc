@@ -5,7 +5,8 @@
 #include <cstdio>
 #include <mutex>
 #include <utility>
-#include <vector>
+
+#include "base/string_printf.h"
 
 namespace msp {
 namespace {
@@ -44,14 +45,9 @@ void Logf(int level, const char* format, ...) {
   if (!LogEnabled(level)) return;
   va_list args;
   va_start(args, format);
-  va_list size_args;
-  va_copy(size_args, args);
-  const int size = std::vsnprintf(nullptr, 0, format, size_args);
-  va_end(size_args);
-  std::vector<char> text(size > 0 ? size + 1 : 1, '\0');
-  std::vsnprintf(text.data(), text.size(), format, args);
+  const std::string text = StringPrintfV(format, args);
   va_end(args);
-  LogText(level, std::string(text.data(), size > 0 ? size : 0));
+  LogText(level, text);
 }
 
 void LogWarning(const std::string& message) {

@@ -27,6 +27,7 @@
 #include "patch_match/pass_runner.h"
 #include "tests/src/backend/cuda/gpu_skip.h"
 #include "tests/support/temp_dir.h"
+#include "tools/evaluate/evaluate_depth.h"
 #include "tools/scene/generate.h"
 
 namespace msp {
@@ -43,17 +44,14 @@ constexpr double kDepthTolerance = 0.01;
 constexpr double kMaxQualityGap = 0.04;
 constexpr double kMaxMeanQualityGap = 0.02;
 
-// The share of the pixels with a true depth whose depth in `map` is within
-// kDepthTolerance of it.
-double ShareWithinTolerance(const DenseMap& map, const DenseMap& truth) {
-  int measured = 0, within = 0;
-  for (size_t i = 0; i < truth.data.size(); ++i) {
-    if (truth.data[i] <= 0.0f) continue;
-    ++measured;
-    within += map.data[i] > 0.0f &&
-              std::fabs(map.data[i] - truth.data[i]) <= kDepthTolerance * truth.data[i];
-  }
-  return static_cast<double>(within) / std::max(measured, 1);
+// The share of the pixels with a true depth whose depth in `depth` is within
+// kDepthTolerance of it: the evaluator's completeness at that threshold.
+double ShareWithinTolerance(const DenseMap& depth, const DenseMap& normal, const DenseMap& truth) {
+  eval::DepthThresholds thresholds;
+  thresholds.relative[0] = kDepthTolerance;
+  return eval::EvaluateDepthMap(depth, normal, truth, DenseMap(), eval::RegionMasks(), thresholds,
+                                /*zero_is_empty=*/true)
+      .all.complete[0];
 }
 
 class MemorySink : public MapSink {
@@ -112,8 +110,8 @@ TEST(SceneParity, BundledSceneAt320x240GivesMapsAsGoodOnBothBackEnds) {
 
     const DenseMap true_depth = ReadDenseMap(truth.DepthMapPath(name));
     ASSERT_EQ(true_depth.data.size(), a.data.size()) << name;
-    const double cpu_share = ShareWithinTolerance(a, true_depth);
-    const double gpu_share = ShareWithinTolerance(b, true_depth);
+    const double cpu_share = ShareWithinTolerance(a, entry.second.second, true_depth);
+    const double gpu_share = ShareWithinTolerance(b, gpu.maps.at(entry.first).second, true_depth);
     EXPECT_LE(std::fabs(gpu_share - cpu_share), kMaxQualityGap)
         << name << ": within 1 % of the truth, CPU " << cpu_share << ", GPU " << gpu_share;
     cpu_quality += cpu_share;

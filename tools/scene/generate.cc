@@ -8,6 +8,7 @@
 #include "tools/scene/renderer.h"
 #include "tools/scene/scene.h"
 #include "tools/scene/scene_writer.h"
+#include "tools/scene/surface_ids.h"
 #include "tools/scene/surface_sample.h"
 #include "tools/scene/tracks.h"
 
@@ -64,6 +65,12 @@ GeneratorSummary GenerateScene(const GeneratorOptions& options) {
                    GroundTruthJson(views, sample,
                                    {{"seed", std::to_string(options.seed)},
                                     {"sky_window", options.sky_window ? "true" : "false"}}));
+  if (options.ideal_masks) {
+    std::vector<IdealMasks> masks(views.size());
+    ParallelIndices(static_cast<int>(views.size()),
+                    [&](int i) { masks[i] = RenderIdealMasks(scene, views[i]); });
+    WriteIdealMasks(options.output, views, masks);
+  }
 
   GeneratorSummary summary;
   summary.num_images = static_cast<int>(views.size());

@@ -19,6 +19,9 @@ struct GeneratorOptions {
   int num_points = 6000;
   // The window to the sky in the y = 0 wall (MakeRoomScene).
   bool sky_window = true;
+  // Also write masks/<name>.<level>.png: the ideal mask layers of every view
+  // (surface_ids.h). Nothing else changes.
+  bool ideal_masks = false;
 };
 
 struct GeneratorSummary {

@@ -141,33 +141,38 @@ bool Scene::Intersect(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
   double best = std::numeric_limits<double>::infinity();
   Eigen::Vector3d best_n = Eigen::Vector3d::Zero();
   int best_material = -1;
-  for (const Shape& shape : shapes) {
+  int best_shape = -1;
+  int best_face = -1;
+  for (size_t i = 0; i < shapes.size(); ++i) {
+    const Shape& shape = shapes[i];
     double t = 0.0;
     Eigen::Vector3d n;
     bool ok = false;
     int material = shape.material;
+    int face = 0;
     switch (shape.type) {
       case ShapeType::kRoom: {
-        int face = 0;
         ok = IntersectRoom(shape, origin, dir, min_t, &t, &n, &face) &&
              !InOpening(shape, face, origin + t * dir);
         if (ok) material = shape.face_material[face];
         break;
       }
       case ShapeType::kBox:
-        ok = IntersectBox(shape, origin, dir, min_t, &t, &n);
+        ok = IntersectBox(shape, origin, dir, min_t, &t, &n, &face);
         break;
       case ShapeType::kSphere:
         ok = IntersectSphere(shape, origin, dir, min_t, &t, &n);
         break;
       case ShapeType::kCylinder:
-        ok = IntersectCylinder(shape, origin, dir, min_t, &t, &n);
+        ok = IntersectCylinder(shape, origin, dir, min_t, &t, &n, &face);
         break;
     }
     if (ok && t < best) {
       best = t;
       best_n = n;
       best_material = material;
+      best_shape = static_cast<int>(i);
+      best_face = face;
     }
   }
   if (best_material < 0) return false;
@@ -175,6 +180,8 @@ bool Scene::Intersect(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
   hit->point = origin + best * dir;
   hit->normal = best_n;
   hit->material = best_material;
+  hit->shape = best_shape;
+  hit->face = best_face;
   return true;
 }
 

@@ -38,6 +38,10 @@ enum class ShapeType {
 
 // Face order of kRoom: -x, +x, -y, +y, -z (floor), +z (ceiling).
 constexpr int kNumRoomFaces = 6;
+// Faces of a shape (Hit::face): a room's or a box's six in the room's order
+// (a box's by its outward normal), the sphere's one (0), a cylinder's side
+// (0), bottom cap (1) and top cap (2).
+constexpr int kMaxShapeFaces = 6;
 
 struct Shape {
   ShapeType type = ShapeType::kBox;
@@ -59,6 +63,8 @@ struct Hit {
   Eigen::Vector3d point;   // world point
   Eigen::Vector3d normal;  // unit, facing the ray origin
   int material = -1;
+  int shape = -1;  // index in Scene::shapes
+  int face = -1;   // face of that shape, see kMaxShapeFaces
 };
 
 struct Light {
@@ -79,6 +85,11 @@ class Scene {
 
   // Linear-space reflectance of `material` at world point p.
   Eigen::Vector3d Albedo(int material, const Eigen::Vector3d& p) const;
+
+  // Which of the two colours of a two-colour pattern (kChecker, kStripes)
+  // covers p: 0 = albedo1, 1 = albedo2. 0 for kPlain and kNoise, whose colour
+  // varies without edges.
+  int Paint(int material, const Eigen::Vector3d& p) const;
 
   // Lambertian shading (point light + ambient) of a hit, before camera noise.
   Eigen::Vector3d Radiance(const Hit& hit) const;

@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
   msp::ToolCommandLine command_line(
       "Usage: msp_make_scene --output <dir> [options]",
       "Renders the bundled scene as a COLMAP dense workspace: images/, sparse/,\n"
-      "stereo/*.cfg, run-colmap-*.sh and the exact ground truth in ground_truth/.");
+      "stereo/*.cfg, run-colmap-*.sh and the exact ground truth in ground_truth/\n"
+      "(with --ideal_masks also the ideal mask layers in masks/).");
   command_line.AddRequired("output", &options.output, "Workspace folder to write (created).");
   command_line.Add(
       "seed", &options.seed,
@@ -27,6 +28,13 @@ int main(int argc, char** argv) {
   command_line.AddFlag("no_sky_window", &options.sky_window, false,
                        "Close the window to open sky in the y = 0 wall (whose pixels have nothing "
                        "to reconstruct: their ground truth is empty).");
+  command_line.AddFlag(
+      "ideal_masks", &options.ideal_masks, true,
+      "Also write ideal segmentation masks to <output>/masks/<image>.<level>.png: the "
+      "renderer's surface ids at each pixel's centre ray, level 0 objects, 1 faces, 2 faces "
+      "split by paint (16-bit, 0 = sky), the layout msp_stereo reads as mask layers. The "
+      "ceiling of what a segmenter can give the prior (docs/segmentation_masks.md). Images and "
+      "ground truth are the same with or without it.");
   try {
     if (command_line.Parse(argc, argv) == msp::ParseStatus::kHelp) {
       std::cout << command_line.Usage();

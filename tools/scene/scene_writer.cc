@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "io/dense_map_io.h"
+#include "io/mask_layers.h"
 
 namespace msp {
 namespace scene {
@@ -134,6 +135,16 @@ void WriteGroundTruth(const std::string& dir, const std::vector<PinholeView>& vi
   WriteSurfacePly((gt / "surface.ply").string(), sample);
   WriteText(gt / "images.txt", names);
   WriteText(gt / "scene.json", scene_json);
+}
+
+void WriteIdealMasks(const std::string& dir, const std::vector<PinholeView>& views,
+                     const std::vector<IdealMasks>& masks) {
+  const std::string mask_dir = (fs::path(dir) / "masks").string();
+  for (size_t i = 0; i < views.size(); ++i) {
+    for (int level = 0; level < kNumIdealMaskLevels; ++level) {
+      WritePng(MaskLayerPath(mask_dir, views[i].name, level), masks[i][level]);
+    }
+  }
 }
 
 }  // namespace scene

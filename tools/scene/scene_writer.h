@@ -10,6 +10,7 @@
 #include "io/sparse_model.h"
 #include "tools/scene/camera_rig.h"
 #include "tools/scene/renderer.h"
+#include "tools/scene/surface_ids.h"
 #include "tools/scene/surface_sample.h"
 
 namespace msp {
@@ -44,6 +45,11 @@ std::string GroundTruthJson(const std::vector<PinholeView>& views, const Surface
 void WriteGroundTruth(const std::string& dir, const std::vector<PinholeView>& views,
                       const std::vector<RenderedView>& rendered, const SurfaceSample& sample,
                       const std::string& scene_json);
+
+// masks/<name>.<level>.png, the layout of the segmentation prior's mask
+// layers (io/mask_layers.h): `masks[i]` of views[i], one 16-bit PNG a level.
+void WriteIdealMasks(const std::string& dir, const std::vector<PinholeView>& views,
+                     const std::vector<IdealMasks>& masks);
 
 }  // namespace scene
 }  // namespace msp

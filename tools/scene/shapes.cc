@@ -43,7 +43,7 @@ bool IntersectRoom(const Shape& room, const Eigen::Vector3d& o, const Eigen::Vec
 }
 
 bool IntersectBox(const Shape& box, const Eigen::Vector3d& o, const Eigen::Vector3d& d,
-                  double min_t, double* t, Eigen::Vector3d* normal) {
+                  double min_t, double* t, Eigen::Vector3d* normal, int* face) {
   double t_near = -std::numeric_limits<double>::infinity();
   double t_far = std::numeric_limits<double>::infinity();
   int near_axis = -1;
@@ -67,6 +67,7 @@ bool IntersectBox(const Shape& box, const Eigen::Vector3d& o, const Eigen::Vecto
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
   n[near_axis] = d[near_axis] > 0.0 ? -1.0 : 1.0;
   *normal = n;
+  if (face) *face = 2 * near_axis + (d[near_axis] > 0.0 ? 0 : 1);
   return true;
 }
 
@@ -87,9 +88,10 @@ bool IntersectSphere(const Shape& sphere, const Eigen::Vector3d& o, const Eigen:
 }
 
 bool IntersectCylinder(const Shape& cyl, const Eigen::Vector3d& o, const Eigen::Vector3d& d,
-                       double min_t, double* t, Eigen::Vector3d* normal) {
+                       double min_t, double* t, Eigen::Vector3d* normal, int* face) {
   double best = std::numeric_limits<double>::infinity();
   Eigen::Vector3d best_n = Eigen::Vector3d::Zero();
+  int best_face = 0;  // side
   const double r2 = cyl.radius * cyl.radius;
   // Side: (ox + t dx - cx)^2 + (oy + t dy - cy)^2 = r^2, clipped to the z range.
   const double ox = o.x() - cyl.center.x();
@@ -107,12 +109,14 @@ bool IntersectCylinder(const Shape& cyl, const Eigen::Vector3d& o, const Eigen::
         if (z < cyl.lo.z() || z > cyl.hi.z()) continue;
         best = root;
         best_n = Eigen::Vector3d(ox + root * d.x(), oy + root * d.y(), 0.0) / cyl.radius;
+        best_face = 0;
       }
     }
   }
   // Caps.
   if (std::abs(d.z()) > kParallelEpsilon) {
-    for (const double zc : {cyl.lo.z(), cyl.hi.z()}) {
+    for (const int cap : {1, 2}) {  // bottom, top
+      const double zc = cap == 1 ? cyl.lo.z() : cyl.hi.z();
       const double root = (zc - o.z()) / d.z();
       if (root <= min_t || root >= best) continue;
       const double px = ox + root * d.x();
@@ -120,11 +124,13 @@ bool IntersectCylinder(const Shape& cyl, const Eigen::Vector3d& o, const Eigen::
       if (px * px + py * py > r2) continue;
       best = root;
       best_n = Eigen::Vector3d(0.0, 0.0, 1.0);
+      best_face = cap;
     }
   }
   if (!std::isfinite(best)) return false;
   *t = best;
   *normal = FaceTowards(best_n, d);
+  if (face) *face = best_face;
   return true;
 }
 

@@ -71,24 +71,37 @@ Eigen::Vector3d Scene::Albedo(int material, const Eigen::Vector3d& p) const {
   switch (m.texture) {
     case Texture::kPlain:
       return m.albedo1 * (1.0 + m.variation * LowFrequency(p));
-    case Texture::kChecker: {
-      const int parity =
-          FloorInt(p.x() / m.scale) + FloorInt(p.y() / m.scale) + FloorInt(p.z() / m.scale);
-      return (parity & 1) ? m.albedo1 : m.albedo2;
-    }
+    case Texture::kChecker:
+    case Texture::kStripes:
+      return Paint(material, p) == 0 ? m.albedo1 : m.albedo2;
     case Texture::kNoise: {
       const double v = FractalNoise(p / m.scale);
       // Stretch the noise's mid-range concentration towards full contrast.
       const double w = std::clamp(1.6 * (v - 0.5) + 0.5, 0.0, 1.0);
       return (1.0 - w) * m.albedo1 + w * m.albedo2;
     }
+  }
+  return m.albedo1;
+}
+
+int Scene::Paint(int material, const Eigen::Vector3d& p) const {
+  const Material& m = materials[material];
+  switch (m.texture) {
+    case Texture::kChecker: {
+      const int parity =
+          FloorInt(p.x() / m.scale) + FloorInt(p.y() / m.scale) + FloorInt(p.z() / m.scale);
+      return (parity & 1) ? 0 : 1;
+    }
     case Texture::kStripes: {
       // Bands across a tilted plane family: helices on a vertical cylinder.
       const double u = p.z() + 0.5 * (p.x() + p.y());
-      return (FloorInt(u / m.scale) & 1) ? m.albedo1 : m.albedo2;
+      return (FloorInt(u / m.scale) & 1) ? 0 : 1;
     }
+    case Texture::kPlain:
+    case Texture::kNoise:
+      break;
   }
-  return m.albedo1;
+  return 0;
 }
 
 Eigen::Vector3d Scene::Radiance(const Hit& hit) const {

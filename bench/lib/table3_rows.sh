@@ -35,6 +35,18 @@ rows=(
   "default|default options (conventional core, segment planes, open sky)|"
 )
 
+# Rows with the scene's ideal mask layers (msp_make_scene --ideal_masks: its
+# surface ids, a perfect segmenter) instead of the embedded segmenter, for
+# bench/table3.sh --ideal_masks, which puts them after `full`. `full` is
+# `default` with deformable patches, so full_ideal is both with the perfect
+# prior (`default` itself runs no prior); noref_ideal shows what the CRF does
+# to edges that are already exact.
+# shellcheck disable=SC2034  # used by bench/table3.sh
+ideal_rows=(
+  "full_ideal|MSP-MVS, ideal masks|$METHOD"
+  "noref_ideal|MSP-MVS, ideal masks, w/o Ref. (no CRF)|$METHOD $NO_REF"
+)
+
 # plan_fields ROW: sets `id`, `label` and the array `options` from an
 # "id|label|options" row.
 plan_fields() {

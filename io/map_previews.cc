@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/patch_match/map_stage.h"
 #include "io/dense_map_io.h"
 #include "io/errors.h"
 #include "io/file_util.h"
@@ -26,7 +27,7 @@ float Percentile(std::vector<float>* values, double fraction) {
 
 std::string MapPreviewPath(const std::string& workspace_path, const std::string& image_name,
                            MapPreview preview) {
-  constexpr const char* kSuffixes[] = {".depth.png", ".normal.png", ".error.png"};
+  constexpr const char* kSuffixes[] = {".depth.png", ".normal.png", ".error.png", ".stages.png"};
   return PreviewPath(workspace_path, image_name, kSuffixes[static_cast<int>(preview)]);
 }
 
@@ -60,6 +61,50 @@ RgbImage NormalPreview(const DenseMap& normal) {
     }
   }
   return image;
+}
+
+RgbImage StagesPreview(const DenseMap& stages) {
+  RgbImage image(stages.width, stages.height);
+  for (int row = 0; row < stages.height; ++row) {
+    for (int col = 0; col < stages.width; ++col) {
+      Rgb color{0, 0, 0};  // no plane
+      switch (static_cast<int>(stages.At(row, col, 0))) {
+        case core::kStageKept:
+          color = Rgb{200, 200, 200};
+          break;
+        case core::kStageOpenSky:
+          color = Rgb{110, 170, 255};
+          break;
+        case core::kStageFilterAngle:
+          color = Rgb{255, 210, 0};
+          break;
+        case core::kStageFilterPhotometric:
+          color = Rgb{230, 50, 200};
+          break;
+        case core::kStageFilterGeometric:
+          color = Rgb{230, 40, 40};
+          break;
+        case core::kStageFilterSeveral:
+          color = Rgb{255, 120, 0};
+          break;
+        default:
+          break;
+      }
+      image.At(row, col) = color;
+    }
+  }
+  return image;
+}
+
+std::string StagesMapPath(const std::string& workspace_path, const std::string& image_name) {
+  return PreviewPath(workspace_path, image_name, ".stages.bin");
+}
+
+void WriteStagesMap(const std::string& workspace_path, const std::string& image_name,
+                    const DenseMap& stages) {
+  WriteDenseMap(StagesMapPath(workspace_path, image_name), stages);
+  WritePreviewPng(MapPreviewPath(workspace_path, image_name, MapPreview::kStages),
+                  StagesPreview(stages));
 }
 
 RgbImage ErrorPreview(const DenseMap& depth, const DenseMap& gt_depth, const double thresholds[2],
@@ -102,6 +147,7 @@ std::vector<std::pair<std::string, std::string>> ExistingPreviews(const std::str
       {"depth", MapPreviewPath(workspace_path, image_name, MapPreview::kDepth)},
       {"normal", MapPreviewPath(workspace_path, image_name, MapPreview::kNormal)},
       {"error", MapPreviewPath(workspace_path, image_name, MapPreview::kError)},
+      {"stages", MapPreviewPath(workspace_path, image_name, MapPreview::kStages)},
       {"prior", PriorPreviewPath(workspace_path, image_name)}};
   std::vector<std::pair<std::string, std::string>> existing;
   for (const auto& preview : all) {

@@ -15,9 +15,9 @@
 
 namespace msp {
 
-enum class MapPreview { kDepth, kNormal, kError };
+enum class MapPreview { kDepth, kNormal, kError, kStages };
 
-// <workspace>/stereo/prior_previews/<image_name>.{depth,normal,error}.png
+// <workspace>/stereo/prior_previews/<image_name>.{depth,normal,error,stages}.png
 std::string MapPreviewPath(const std::string& workspace_path, const std::string& image_name,
                            MapPreview preview);
 
@@ -33,6 +33,20 @@ RgbImage NormalPreview(const DenseMap& normal);
 // (NearestGroundTruthIndex: the ground truth may be larger), at the map's size.
 RgbImage ErrorPreview(const DenseMap& depth, const DenseMap& gt_depth, const double thresholds[2],
                       bool zero_is_empty = false);
+
+// The stages map (ExtractMaps: channel 0 a core::MapStage, channel 1 the
+// depth before the filter) as colours: kept light grey, no plane black, open
+// sky blue, removed by the filter's triangulation angle yellow, its NCC
+// magenta, its reprojection error red, by several tests orange.
+RgbImage StagesPreview(const DenseMap& stages);
+
+// <workspace>/stereo/prior_previews/<image_name>.stages.bin: the stages map
+// itself, in COLMAP's dense-map format, for bench/map_stages.py.
+std::string StagesMapPath(const std::string& workspace_path, const std::string& image_name);
+
+// Writes the stages map of `image_name` and its picture, each atomically.
+void WriteStagesMap(const std::string& workspace_path, const std::string& image_name,
+                    const DenseMap& stages);
 
 // Writes the depth and normal previews of `image_name` and, when
 // `ground_truth` is given and lists the image, its error preview; each PNG

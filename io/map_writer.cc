@@ -76,4 +76,8 @@ void MapWriter::WriteMapPreviews(int view, const DenseMap& depth, const DenseMap
                         ground_truth_ ? &*ground_truth_ : nullptr);
 }
 
+void MapWriter::WriteStagesMap(int view, const DenseMap& stages) {
+  msp::WriteStagesMap(workspace_path_, Name(view), stages);
+}
+
 }  // namespace msp

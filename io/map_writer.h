@@ -40,6 +40,7 @@ class MapWriter : public MapSink {
   // (map_previews.h), each atomically; std::invalid_argument for maps Write
   // would reject, InputError when a file cannot be read or written.
   void WriteMapPreviews(int view, const DenseMap& depth, const DenseMap& normal) override;
+  void WriteStagesMap(int view, const DenseMap& stages) override;
 
   const std::string& final_type() const { return final_type_; }
 

@@ -40,6 +40,10 @@ class MapSink {
   // pictures too. A sink that keeps no pictures ignores them.
   virtual void WriteMapPreviews(int /*view*/, const DenseMap& /*depth*/,
                                 const DenseMap& /*normal*/) {}
+  // With --MspStereo.write_previews: where each pixel's depth went (ExtractMaps'
+  // stages map: core::MapStage and the depth before the filter). A sink that
+  // keeps no pictures ignores it.
+  virtual void WriteStagesMap(int /*view*/, const DenseMap& /*stages*/) {}
 };
 
 }  // namespace msp

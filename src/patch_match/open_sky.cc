@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "base/pixel_neighbours.h"
+#include "core/patch_match/map_stage.h"
 #include "core/patch_match/segment_plane.h"
 #include "core/patch_match/window_texture.h"
 
@@ -178,6 +179,21 @@ void ClearOpenSky(const std::vector<uint8_t>& open_sky, DenseMap* depth, DenseMa
       if (!open_sky[static_cast<size_t>(row) * depth->width + col]) continue;
       depth->At(row, col) = 0.0f;
       for (int c = 0; c < 3; ++c) normal->At(row, col, c) = 0.0f;
+    }
+  }
+}
+
+void MarkOpenSkyStage(const std::vector<uint8_t>& open_sky, DenseMap* stages) {
+  if (open_sky.empty()) return;
+  if (open_sky.size() != static_cast<size_t>(stages->width) * stages->height) {
+    throw std::logic_error("open-sky mask and stages map differ in size");
+  }
+  for (int row = 0; row < stages->height; ++row) {
+    for (int col = 0; col < stages->width; ++col) {
+      if (open_sky[static_cast<size_t>(row) * stages->width + col] &&
+          stages->At(row, col, 0) != core::kStageNoPlane) {
+        stages->At(row, col, 0) = core::kStageOpenSky;
+      }
     }
   }
 }

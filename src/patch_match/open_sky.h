@@ -34,4 +34,8 @@ std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMa
 // `open_sky` is 1; nothing when it is empty.
 void ClearOpenSky(const std::vector<uint8_t>& open_sky, DenseMap* depth, DenseMap* normal);
 
+// core::kStageOpenSky in channel 0 of `stages` (ExtractMaps' stages map)
+// where `open_sky` is 1 and the pixel had a plane; nothing when it is empty.
+void MarkOpenSkyStage(const std::vector<uint8_t>& open_sky, DenseMap* stages);
+
 }  // namespace msp

@@ -78,9 +78,9 @@ core::NccParams MakeNccParams(const PatchMatchStereoOptions& pm, const MspStereo
 class PassRunner {
  public:
   PassRunner(const std::vector<View>& views, const std::vector<Problem>& problems,
-            const PatchMatchStereoOptions& pm, const MspStereoOptions& msp,
-            const std::string& scratch_dir, MapSink& sink, SweepEngine& engine,
-            const SharedRun* shared)
+             const PatchMatchStereoOptions& pm, const MspStereoOptions& msp,
+             const std::string& scratch_dir, MapSink& sink, SweepEngine& engine,
+             const SharedRun* shared)
       : views_(views),
         problems_(problems),
         pm_(pm),
@@ -327,7 +327,8 @@ class PassRunner {
     }
     // A shard's other sources are other processes' images, saved after the
     // previous pass.
-    if (shared_ != nullptr) shared_->AddSourceDepths(static_cast<int>(p) - 1, problem.srcs, &depths);
+    if (shared_ != nullptr)
+      shared_->AddSourceDepths(static_cast<int>(p) - 1, problem.srcs, &depths);
     return depths;
   }
 
@@ -346,9 +347,8 @@ class PassRunner {
     } else {
       state.previous_depth.clear();
     }
-    const std::vector<uint8_t> unlit =
-        UnlitPixels(level_->gray.at(problem.ref), pm_.window_radius,
-                    static_cast<float>(msp_.black_level));
+    const std::vector<uint8_t> unlit = UnlitPixels(level_->gray.at(problem.ref), pm_.window_radius,
+                                                   static_cast<float>(msp_.black_level));
     core::PassParams params = MakeParams(problem, pass, prev_depth, state);
     if (!unlit.empty()) {
       params.unlit = unlit.data();
@@ -358,10 +358,9 @@ class PassRunner {
              100.0 * std::count(unlit.begin(), unlit.end(), 1) / unlit.size());
       }
     }
-    ledger_.AddImagePass(pass.round,
-                         std::to_string(params.state.width) + "x" +
-                             std::to_string(params.state.height),
-                         static_cast<long>(params.state.width) * params.state.height);
+    ledger_.AddImagePass(
+        pass.round, std::to_string(params.state.width) + "x" + std::to_string(params.state.height),
+        static_cast<long>(params.state.width) * params.state.height);
     Measured(pass, Step::kStart, [&] {
       if (pass.start == PassStart::kRandom) {
         engine_.Initialize(params);
@@ -435,8 +434,7 @@ class PassRunner {
 
   // Segment planes of one image after a pass (docs/method.md section 2.10),
   // then how many segments had a plane and how many pixels took theirs.
-  void RunSegmentPlanes(const core::PassParams& params, const Problem& problem,
-                        PixelState* state) {
+  void RunSegmentPlanes(const core::PassParams& params, const Problem& problem, PixelState* state) {
     const auto t0 = std::chrono::steady_clock::now();
     if (state->segments.empty()) {
       state->segments = SegmentPlaneLabels(level_->color.at(problem.ref), segmenter_);
@@ -445,15 +443,14 @@ class PassRunner {
     rules.own_support = msp_.segment_plane_own_support;
     rules.confirm = msp_.segment_plane_confirmation;
     rules.open_sky = msp_.open_sky;
-    const SegmentPlanesReport r =
-        ApplySegmentPlanes(params, state->segments, threads_, rules,
-                           &level_->color.at(problem.ref), &state->open_sky);
+    const SegmentPlanesReport r = ApplySegmentPlanes(
+        params, state->segments, threads_, rules, &level_->color.at(problem.ref), &state->open_sky);
     const double pixels = params.state.width * params.state.height;
     Logf(kLogDetail,
          "  segment planes: %d of %d segments, %.1f%% of pixels offered, %.1f%% took, %.1f%% "
          "open sky; %.2f s\n",
-         r.num_planes, r.num_segments, 100.0 * r.num_offered / pixels,
-         100.0 * r.num_taken / pixels, 100.0 * r.num_open_sky / pixels, SecondsSince(t0));
+         r.num_planes, r.num_segments, 100.0 * r.num_offered / pixels, 100.0 * r.num_taken / pixels,
+         100.0 * r.num_open_sky / pixels, SecondsSince(t0));
   }
 
   // The prior of one image after a deformable pass (docs/method.md section 4): its
@@ -540,11 +537,17 @@ class PassRunner {
     filter.min_num_consistent = std::min(pm_.filter_min_num_consistent, params.num_src);
     filter.geom_max_error = static_cast<float>(pm_.filter_geom_consistency_max_cost);
     filter.textureless_by_geometry = msp_.filter_textureless_by_geometry ? 1 : 0;
-    ExtractMaps(params, pm_.filter ? &filter : nullptr, threads_, &depth, &normal);
+    DenseMap stages;
+    ExtractMaps(params, pm_.filter ? &filter : nullptr, threads_, &depth, &normal,
+                pass.map_previews ? &stages : nullptr);
     ClearOpenSky(open_sky, &depth, &normal);
     // Pictures before maps: a run stopped between them redoes the view, so
     // every view with final maps has its pictures.
-    if (pass.map_previews) sink_.WriteMapPreviews(problem.ref, depth, normal);
+    if (pass.map_previews) {
+      MarkOpenSkyStage(open_sky, &stages);
+      sink_.WriteStagesMap(problem.ref, stages);
+      sink_.WriteMapPreviews(problem.ref, depth, normal);
+    }
     sink_.Write(problem.ref, FinalMapType(pm_.geom_consistency), depth, normal);
     long valid = 0;
     for (int i = 0; i < depth.width * depth.height; ++i) valid += depth.data[i] > 0 ? 1 : 0;
@@ -562,13 +565,13 @@ class PassRunner {
   const int threads_;
   StateCache cache_;
   std::vector<int> run_;
-  std::unique_ptr<Level> level_;        // the current problem's, at the pass's level
-  std::unique_ptr<Level> coarser_;      // its reference at the coarser level, when upsampled
-  std::set<int> done_in_pass_;          // reference views the current pass has updated
-  std::unique_ptr<PriorDriver> prior_;  // null = no segmentation prior
+  std::unique_ptr<Level> level_;          // the current problem's, at the pass's level
+  std::unique_ptr<Level> coarser_;        // its reference at the coarser level, when upsampled
+  std::set<int> done_in_pass_;            // reference views the current pass has updated
+  std::unique_ptr<PriorDriver> prior_;    // null = no segmentation prior
   std::unique_ptr<SharedPasses> shared_;  // null = this process runs every problem
-  DeformablePass deformable_;           // the deformable step and its buffers
-  const Segmenter segmenter_;           // of segment planes
+  DeformablePass deformable_;             // the deformable step and its buffers
+  const Segmenter segmenter_;             // of segment planes
   std::chrono::steady_clock::time_point start_;
   std::unique_ptr<ProgressMeter> progress_;
   std::map<int, long> valid_pixels_;  // of the final maps written, by reference view

@@ -95,14 +95,25 @@ void LocalRefineState(const core::PassParams& params, int num_threads) {
 }
 
 void ExtractMaps(const core::PassParams& params, const core::FilterParams* filter, int num_threads,
-                 DenseMap* depth, DenseMap* normal) {
+                 DenseMap* depth, DenseMap* normal, DenseMap* stages) {
   const core::PixelStateView& s = params.state;
   *depth = DenseMap(s.width, s.height, 1);
   *normal = DenseMap(s.width, s.height, 3);
+  if (stages != nullptr) *stages = DenseMap(s.width, s.height, 2);
   ForEachPixel(params, num_threads, [&](int col, int row) {
     const int i = s.Index(col, row);
     const core::PlaneHypothesis h = s.Get(i);
-    if (!(h.depth > 0.0f) || !std::isfinite(h.depth)) return;
+    const bool has_plane = h.depth > 0.0f && std::isfinite(h.depth);
+    if (stages != nullptr) {
+      // The depth before the filter beside the stage, so that the right
+      // depth the filter removes can be counted against the ground truth.
+      stages->At(row, col, 0) =
+          static_cast<float>(!has_plane          ? core::kStageNoPlane
+                             : filter != nullptr ? core::FilterStage(params, *filter, col, row)
+                                                 : core::kStageKept);
+      stages->At(row, col, 1) = has_plane ? h.depth : 0.0f;
+    }
+    if (!has_plane) return;
     if (filter != nullptr &&
         core::CountConsistentViews(params, *filter, col, row) < filter->min_num_consistent) {
       return;

@@ -21,8 +21,10 @@ void MedianFilterState(const core::PassParams& params, int num_threads);
 // The +-5 px disparity sweep with fixed normals.
 void LocalRefineState(const core::PassParams& params, int num_threads);
 // Depth and normal maps of the state; with `filter`, only pixels with enough
-// consistent views keep their depth (the rest are 0).
+// consistent views keep their depth (the rest are 0). With `stages`, also
+// where each pixel's depth goes (2 channels: its core::MapStage and its depth
+// before the filter, 0 without a plane), for --MspStereo.write_previews.
 void ExtractMaps(const core::PassParams& params, const core::FilterParams* filter, int num_threads,
-                 DenseMap* depth, DenseMap* normal);
+                 DenseMap* depth, DenseMap* normal, DenseMap* stages = nullptr);
 
 }  // namespace msp

@@ -33,6 +33,7 @@
 #include "core/patch_match/geometric_cost.h"
 #include "core/patch_match/joint_bilateral.h"
 #include "core/patch_match/local_refine.h"
+#include "core/patch_match/map_stage.h"
 #include "core/patch_match/output_filter.h"
 #include "core/patch_match/patch_match_kernel.h"
 #include "core/patch_match/segment_plane.h"

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/patch_match/map_stage.h"
 #include "core/patch_match/patch_match_kernel.h"
 #include "core/patch_match/window_texture.h"
 
@@ -28,34 +29,85 @@ MSP_HD float TriangulationAngle(Vec3 center_a, Vec3 center_b, Vec3 X) {
   return acosf(Clamp(Dot(a, b), -1.0f, 1.0f));
 }
 
+// What the filter's tests say of one source view for a pixel's plane.
+struct ViewTests {
+  bool angle = false;        // triangulation angle >= min_triangulation_angle
+  bool photometric = false;  // NCC >= min_ncc (or, by geometry, a source depth map exists)
+  bool geometric = false;    // reprojection error <= geom_max_error (true outside geometric passes)
+  MSP_HD bool All() const { return angle && photometric && geometric; }
+};
+
+// The pixel's plane prepared once for the tests of every view.
+struct FilterPixel {
+  bool valid = false;
+  PlaneHypothesis h;
+  PreparedPlane plane;
+  Vec3 X;  // world point
+  RefWindow window;
+  bool by_geometry = false;
+};
+
+MSP_HD FilterPixel PrepareFilterPixel(const PassParams& p, const FilterParams& f, int col,
+                                      int row) {
+  FilterPixel q;
+  q.h = p.state.Get(p.state.Index(col, row));
+  if (!(q.h.depth > 0.0f)) return q;
+  q.plane = PreparePlane(p, col, row, q.h);
+  if (!q.plane.valid) return q;
+  q.X = CamToWorld(p.ref_camera, BackProject(p.ref_camera, static_cast<float>(col),
+                                             static_cast<float>(row), q.h.depth));
+  PrepareWindow(p, col, row, &q.window);
+  q.by_geometry = f.textureless_by_geometry && p.geometric && IsWeaklyTextured(p, col, row);
+  q.valid = true;
+  return q;
+}
+
+// The tests of source `j`. With `all` false it stops at the first failed test
+// (the filter's count); with `all` true every test is run, to say which failed.
+MSP_HD ViewTests TestView(const PassParams& p, const FilterParams& f, const FilterPixel& q, int j,
+                          int col, int row, bool all) {
+  ViewTests t;
+  const SourceView& s = p.src[j];
+  t.angle =
+      TriangulationAngle(p.ref_camera.center, s.camera.center, q.X) >= f.min_triangulation_angle;
+  if (!t.angle && !all) return t;
+  t.photometric = q.by_geometry ? s.depth.data != nullptr
+                                : 1.0f - PhotometricViewCost(p, q.window, j, q.plane) >= f.min_ncc;
+  if (!t.photometric && !all) return t;
+  t.geometric = !(p.geometric && s.depth.data != nullptr) ||
+                ReprojectionError(p.ref_camera, s.camera, s.depth, col, row, q.h.depth,
+                                  f.geom_max_error + 1.0f) <= f.geom_max_error;
+  return t;
+}
+
 // Number of source views consistent with the pixel's plane.
 MSP_HD int CountConsistentViews(const PassParams& p, const FilterParams& f, int col, int row) {
-  const PlaneHypothesis h = p.state.Get(p.state.Index(col, row));
-  if (!(h.depth > 0.0f)) return 0;
-  const PreparedPlane plane = PreparePlane(p, col, row, h);
-  if (!plane.valid) return 0;
-  const Vec3 X = CamToWorld(p.ref_camera, BackProject(p.ref_camera, static_cast<float>(col),
-                                                      static_cast<float>(row), h.depth));
-  RefWindow w;
-  PrepareWindow(p, col, row, &w);
-  const bool by_geometry =
-      f.textureless_by_geometry && p.geometric && IsWeaklyTextured(p, col, row);
+  const FilterPixel q = PrepareFilterPixel(p, f, col, row);
+  if (!q.valid) return 0;
   int count = 0;
-  for (int j = 0; j < p.num_src; ++j) {
-    const SourceView& s = p.src[j];
-    if (TriangulationAngle(p.ref_camera.center, s.camera.center, X) < f.min_triangulation_angle) {
-      continue;
-    }
-    if (by_geometry && s.depth.data == nullptr) continue;
-    if (!by_geometry && 1.0f - PhotometricViewCost(p, w, j, plane) < f.min_ncc) continue;
-    if (p.geometric && s.depth.data != nullptr &&
-        ReprojectionError(p.ref_camera, s.camera, s.depth, col, row, h.depth,
-                          f.geom_max_error + 1.0f) > f.geom_max_error) {
-      continue;
-    }
-    ++count;
-  }
+  for (int j = 0; j < p.num_src; ++j) count += TestView(p, f, q, j, col, row, false).All() ? 1 : 0;
   return count;
+}
+
+// The stage of a pixel with a plane that the filter keeps or removes: which
+// single test, dropped, would let the pixel pass.
+MSP_HD int FilterStage(const PassParams& p, const FilterParams& f, int col, int row) {
+  const FilterPixel q = PrepareFilterPixel(p, f, col, row);
+  if (!q.valid) return kStageNoPlane;
+  int all = 0, no_angle = 0, no_photometric = 0, no_geometric = 0;
+  for (int j = 0; j < p.num_src; ++j) {
+    const ViewTests t = TestView(p, f, q, j, col, row, true);
+    all += t.All() ? 1 : 0;
+    no_angle += t.photometric && t.geometric ? 1 : 0;
+    no_photometric += t.angle && t.geometric ? 1 : 0;
+    no_geometric += t.angle && t.photometric ? 1 : 0;
+  }
+  const int n = f.min_num_consistent;
+  if (all >= n) return kStageKept;
+  if (no_angle >= n) return kStageFilterAngle;
+  if (no_photometric >= n) return kStageFilterPhotometric;
+  if (no_geometric >= n) return kStageFilterGeometric;
+  return kStageFilterSeveral;
 }
 
 }  // namespace core

@@ -192,6 +192,39 @@ TEST(OutputFilter, TexturelessPixelCountsTheViewsThatAgreeGeometrically) {
   EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 0);
 }
 
+// The stage map names the one test that, dropped, would keep the pixel: on
+// the three-view scene (two wide views, one at ~0.3 degrees) the true plane
+// is kept; asking for three views fails on the angle alone; with the wide
+// views alone, a source depth map 20 % off fails the reprojection test, and
+// an NCC threshold no view reaches the NCC test, or several with both.
+TEST(OutputFilter, FilterStageNamesTheTestThatRemovedThePixel) {
+  test::PlaneScene s;
+  MakeThreeViewScene(&s);
+  PassParams& p = s.params;
+  const std::vector<float> truth0 = test::PlaneDepthMap(p.src[0].camera, kDepth);
+  const std::vector<float> truth1 = test::PlaneDepthMap(p.src[1].camera, kDepth);
+  const std::vector<float> deeper1 = test::PlaneDepthMap(p.src[1].camera, 1.2f * kDepth);
+  const Camera& cam0 = p.src[0].camera;
+  const Camera& cam1 = p.src[1].camera;
+  p.src[0].depth = ImageView{truth0.data(), cam0.width, cam0.height, cam0.width};
+  p.src[1].depth = ImageView{truth1.data(), cam1.width, cam1.height, cam1.width};
+  p.geometric = 1;
+  FilterParams f = DefaultFilter();
+  EXPECT_EQ(FilterStage(p, f, kCol, kRow), kStageKept);
+  f.min_num_consistent = 3;  // the near view (no depth map) has only the angle against it
+  EXPECT_EQ(FilterStage(p, f, kCol, kRow), kStageFilterAngle);
+  f.min_num_consistent = 2;
+  p.num_src = 2;  // the wide views alone from here
+  p.src[1].depth = ImageView{deeper1.data(), cam1.width, cam1.height, cam1.width};
+  EXPECT_EQ(FilterStage(p, f, kCol, kRow), kStageFilterGeometric);
+  f.min_ncc = 2.0f;  // no view passes NCC: the photometric test alone is not it
+  EXPECT_EQ(FilterStage(p, f, kCol, kRow), kStageFilterSeveral);
+  p.src[1].depth = ImageView{truth1.data(), cam1.width, cam1.height, cam1.width};
+  EXPECT_EQ(FilterStage(p, f, kCol, kRow), kStageFilterPhotometric);
+  SetPlane(p, kCol, kRow, PlaneHypothesis{0.0f, Vec3{0.0f, 0.0f, -1.0f}});
+  EXPECT_EQ(FilterStage(p, f, kCol, kRow), kStageNoPlane);
+}
+
 }  // namespace
 }  // namespace core
 }  // namespace msp

@@ -13,9 +13,6 @@ namespace {
 constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
 // Horizontal field of view of every camera: a typical phone / DSLR wide lens.
 constexpr double kHorizontalFovDeg = 65.0;
-// The cameras look at a point above the floor near the corner, so all views
-// share the two walls, the floor and the objects.
-const Eigen::Vector3d kLookAt(1.3, 1.3, 0.6);
 // The arc spans 54 degrees of azimuth around the look-at point: neighbours are
 // ~6 degrees apart (plus the height changes), the end views ~55 degrees.
 constexpr double kFirstAzimuthDeg = 18.0;
@@ -53,6 +50,7 @@ bool PinholeView::Project(const Eigen::Vector3d& X, double* col, double* row, do
 std::vector<PinholeView> MakeCameraRig(const RigOptions& options, uint64_t seed) {
   std::vector<PinholeView> views;
   const int n = options.num_cameras;
+  const Eigen::Vector3d& look_at = options.look_at;
   const double focal = 0.5 * options.width / std::tan(0.5 * kHorizontalFovDeg * kDegToRad);
   for (int i = 0; i < n; ++i) {
     const double s = n > 1 ? static_cast<double>(i) / (n - 1) : 0.5;
@@ -61,10 +59,10 @@ std::vector<PinholeView> MakeCameraRig(const RigOptions& options, uint64_t seed)
     const double height = (i % 2 == 0) ? kLowHeight : kHighHeight;
     const uint64_t key = 8 * static_cast<uint64_t>(i);
     const Eigen::Vector3d center(
-        kLookAt.x() + distance * std::cos(azimuth) + Jitter(seed, key, kCenterJitter),
-        kLookAt.y() + distance * std::sin(azimuth) + Jitter(seed, key + 1, kCenterJitter),
+        look_at.x() + distance * std::cos(azimuth) + Jitter(seed, key, kCenterJitter),
+        look_at.y() + distance * std::sin(azimuth) + Jitter(seed, key + 1, kCenterJitter),
         height + Jitter(seed, key + 2, kCenterJitter));
-    const Eigen::Vector3d target = kLookAt + Eigen::Vector3d(Jitter(seed, key + 3, kLookAtJitter),
+    const Eigen::Vector3d target = look_at + Eigen::Vector3d(Jitter(seed, key + 3, kLookAtJitter),
                                                              Jitter(seed, key + 4, kLookAtJitter),
                                                              Jitter(seed, key + 5, kLookAtJitter));
     // Camera axes: x right, y down, z forward (COLMAP), world z is up.

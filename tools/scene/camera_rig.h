@@ -38,10 +38,14 @@ struct RigOptions {
   int width = 640;
   int height = 480;
   int num_cameras = 10;
+  // The point every view looks at (with jitter): the room's is above the
+  // floor near the corner, so all views share the two walls, the floor and
+  // the objects.
+  Eigen::Vector3d look_at = Eigen::Vector3d(1.3, 1.3, 0.6);
 };
 
-// Cameras on an arc facing the corner at the origin, alternating heights and
-// distances; the seed jitters positions and look-at points by centimetres.
+// Cameras on an arc around options.look_at, facing the corner at the origin, alternating heights
+// and distances; the seed jitters positions and look-at points by centimetres.
 std::vector<PinholeView> MakeCameraRig(const RigOptions& options, uint64_t seed);
 
 // World -> camera rotation as COLMAP's (qw, qx, qy, qz), with qw >= 0.

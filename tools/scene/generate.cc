@@ -2,12 +2,14 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tools/scene/parallel.h"
 #include "tools/scene/renderer.h"
 #include "tools/scene/scene.h"
 #include "tools/scene/scene_writer.h"
+#include "tools/scene/street_scene.h"
 #include "tools/scene/surface_ids.h"
 #include "tools/scene/surface_sample.h"
 #include "tools/scene/tracks.h"
@@ -46,12 +48,49 @@ void CheckOptions(const GeneratorOptions& options) {
   }
 }
 
+SkyKind ParseSky(const std::string& name) {
+  if (name == "pale") return SkyKind::kPale;
+  if (name == "blue") return SkyKind::kBlue;
+  if (name == "overcast") return SkyKind::kOvercast;
+  if (name == "clouds") return SkyKind::kClouds;
+  throw std::runtime_error("unknown sky '" + name + "' (pale, blue, overcast, clouds)");
+}
+
+bool IsRoom(const GeneratorOptions& options) {
+  if (options.kind == "room") return true;
+  if (options.kind == "street") return false;
+  throw std::runtime_error("unknown scene kind '" + options.kind + "' (room, street)");
+}
+
+Scene MakeScene(const GeneratorOptions& options) {
+  if (IsRoom(options)) {
+    Scene scene = MakeRoomScene(options.sky_window);
+    if (!options.sky.empty()) scene.sky = ParseSky(options.sky);
+    return scene;
+  }
+  return MakeStreetScene(ParseSky(options.sky.empty() ? "blue" : options.sky));
+}
+
+// scene.json's header: the bundled scene's as it always was (its files stay
+// byte for byte the same), the kind and sky added for any other.
+std::vector<std::pair<std::string, std::string>> JsonHeader(const GeneratorOptions& options) {
+  std::vector<std::pair<std::string, std::string>> header = {
+      {"seed", std::to_string(options.seed)},
+      {"sky_window", options.sky_window ? "true" : "false"}};
+  if (!IsRoom(options) || !options.sky.empty()) {
+    header.push_back({"kind", options.kind});
+    header.push_back({"sky", options.sky.empty() ? "blue" : options.sky});
+  }
+  return header;
+}
+
 }  // namespace
 
 GeneratorSummary GenerateScene(const GeneratorOptions& options) {
   CheckOptions(options);
-  const Scene scene = MakeRoomScene(options.sky_window);
-  const std::vector<PinholeView> views = MakeCameraRig(options.rig, options.seed);
+  const Scene scene = MakeScene(options);
+  const std::vector<PinholeView> views =
+      MakeCameraRig(IsRoom(options) ? options.rig : StreetRig(options.rig), options.seed);
   std::vector<RenderedView> rendered(views.size());
   ParallelIndices(static_cast<int>(views.size()),
                   [&](int i) { rendered[i] = RenderView(scene, views[i], i, options.seed); });
@@ -62,9 +101,7 @@ GeneratorSummary GenerateScene(const GeneratorOptions& options) {
 
   WriteColmapWorkspace(options.output, model, rendered);
   WriteGroundTruth(options.output, views, rendered, sample,
-                   GroundTruthJson(views, sample,
-                                   {{"seed", std::to_string(options.seed)},
-                                    {"sky_window", options.sky_window ? "true" : "false"}}));
+                   GroundTruthJson(views, sample, JsonHeader(options)));
   if (options.ideal_masks) {
     std::vector<IdealMasks> masks(views.size());
     ParallelIndices(static_cast<int>(views.size()),

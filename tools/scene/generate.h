@@ -17,6 +17,12 @@ struct GeneratorOptions {
   // Target number of sparse points (TrackOptions::num_points); fewer make a
   // small model for the many-image workspaces of the memory test.
   int num_points = 6000;
+  // The scene: "room" (MakeRoomScene, the bundled scene) or "street"
+  // (MakeStreetScene: open sky reaching the views' borders).
+  std::string kind = "room";
+  // The sky (SkyKind): "pale" (the bundled scene's), "blue", "overcast",
+  // "clouds"; empty: the kind's own (room: pale, street: blue).
+  std::string sky;
   // The window to the sky in the y = 0 wall (MakeRoomScene).
   bool sky_window = true;
   // Also write masks/<name>.<level>.png: the ideal mask layers of every view

@@ -67,6 +67,15 @@ struct Hit {
   int face = -1;   // face of that shape, see kMaxShapeFaces
 };
 
+// What a ray that hits nothing sees (Scene::SkyRadiance). Every kind is open
+// sky: its pixels' ground truth is empty, whatever their colour.
+enum class SkyKind {
+  kPale,      // the bundled scene's: pale at the horizon to light blue overhead
+  kBlue,      // a deeper daylight gradient, darker than the facades' highlights
+  kOvercast,  // white-grey, brighter at the horizon: as bright as a white wall
+  kClouds,    // kBlue with soft white clouds: smooth, but not one colour
+};
+
 struct Light {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   double diffuse = 0.6;
@@ -78,6 +87,7 @@ class Scene {
   std::vector<Material> materials;
   std::vector<Shape> shapes;
   Light light;
+  SkyKind sky = SkyKind::kPale;
 
   // Nearest intersection with t > min_t along origin + t * dir (dir unit length).
   bool Intersect(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, Hit* hit,
@@ -94,8 +104,8 @@ class Scene {
   // Lambertian shading (point light + ambient) of a hit, before camera noise.
   Eigen::Vector3d Radiance(const Hit& hit) const;
 
-  // What a ray that hits nothing sees: a clear sky, bright and smooth, from
-  // pale at the horizon to blue overhead (unit direction `dir`).
+  // What a ray that hits nothing sees (unit direction `dir`): the sky of
+  // kind `sky`, smooth and without depth (sky.cc).
   Eigen::Vector3d SkyRadiance(const Eigen::Vector3d& dir) const;
 };
 

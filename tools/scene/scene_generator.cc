@@ -25,6 +25,14 @@ int main(int argc, char** argv) {
   command_line.Add("num_cameras", &options.rig.num_cameras, "Number of views on the camera arc.");
   command_line.Add("num_points", &options.num_points,
                    "Target number of sparse points (3D points with tracks) of the model.");
+  command_line.AddChoice("kind", &options.kind, {"room", "street"},
+                         "The scene: room (the bundled scene: a room with a window to the sky) or "
+                         "street (facades, a tower and a tree under open sky that reaches the top "
+                         "and side borders of every view).");
+  command_line.AddChoice("sky", &options.sky, {"", "pale", "blue", "overcast", "clouds"},
+                         "The sky: pale (the bundled scene's), blue (a deeper gradient), overcast "
+                         "(white-grey) or clouds (blue with soft white clouds); empty: the "
+                         "kind's own (room: pale, street: blue). Its ground truth is empty.");
   command_line.AddFlag("no_sky_window", &options.sky_window, false,
                        "Close the window to open sky in the y = 0 wall (whose pixels have nothing "
                        "to reconstruct: their ground truth is empty).");

@@ -110,12 +110,5 @@ Eigen::Vector3d Scene::Radiance(const Hit& hit) const {
   return Albedo(hit.material, hit.point) * (light.ambient + light.diffuse * lambert);
 }
 
-Eigen::Vector3d Scene::SkyRadiance(const Eigen::Vector3d& dir) const {
-  const Eigen::Vector3d horizon(0.86, 0.9, 0.95);
-  const Eigen::Vector3d zenith(0.55, 0.7, 0.95);
-  const double up = std::clamp(dir.z(), 0.0, 1.0);
-  return horizon + (zenith - horizon) * up;
-}
-
 }  // namespace scene
 }  // namespace msp

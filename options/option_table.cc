@@ -248,6 +248,16 @@ void DefineMspStereoCommonOptions(MspStereoOptions* m, OptionVisitor* t) {
                  "Leave empty the sky-coloured (bright and blue, or white-out), mostly untextured "
                  "segments that touch the image border and have no plane of their own (the sky, "
                  "docs/method.md section 2.11); needs segment_planes.");
+  MSP_ADD_OPTION(t, *m, normals_from_depth,
+                 "Write each pixel's normal as the plane fitted to the 3D points of the pixels "
+                 "around it on the same surface, instead of its plane's normal, which scatters on "
+                 "weak texture (COLMAP's fusion joins only normals within 10 degrees; "
+                 "docs/method.md section 2.9).");
+  MSP_ADD_OPTION(t, *m, planar_prior,
+                 "In geometric passes, triangulate the pixels whose depth the other views bring "
+                 "back, keep the triangles inside one colour segment, and offer each triangle's "
+                 "plane to the unconfirmed pixels within it (a planar prior after ACMP; "
+                 "docs/method.md section 2.12).");
   MSP_ADD_OPTION(t, *m, depth_range_from_sources,
                  "Depth range of each reference image (unless --PatchMatchStereo.depth_min/max "
                  "are given) from the sparse points it or any of its sources observes in front of "

@@ -126,6 +126,12 @@ struct MspStereoOptions {
   // Sky-coloured, untextured segments open to the image border with no plane of their own are
   // left empty: the sky (docs/method.md section 2.11). Needs segment_planes.
   bool open_sky = true;
+  // Normals of the final maps from the plane fitted to the depths around each pixel, instead of
+  // the sweeps' normals, which scatter on weak texture (docs/method.md section 2.9).
+  bool normals_from_depth = false;
+  // In geometric passes, planes of triangles between the pixels the other views confirm, inside
+  // one colour segment, offered to the unconfirmed pixels within (docs/method.md section 2.12).
+  bool planar_prior = false;
   // Depth range of a reference image from the sparse points it or any of its sources observes
   // that lie in front of it and inside its image (COLMAP's percentile rule on more points);
   // false = its own observations only, as COLMAP.

@@ -22,7 +22,9 @@
 #include "engine/pass_schedule.h"
 #include "engine/sweep_engine.h"
 #include "patch_match/image_pyramid.h"
+#include "patch_match/depth_normals.h"
 #include "patch_match/open_sky.h"
+#include "patch_match/planar_prior.h"
 #include "patch_match/problem_level.h"
 #include "patch_match/run_summary.h"
 #include "patch_match/segment_planes.h"
@@ -387,6 +389,9 @@ class PassRunner {
     if (pass.segment_planes) {
       Measured(pass, Step::kSegmentPlanes, [&] { RunSegmentPlanes(params, problem, &state); });
     }
+    if (msp_.planar_prior && params.geometric) {
+      Measured(pass, Step::kSegmentPlanes, [&] { RunPlanarPrior(params, problem, &state); });
+    }
     if (pass.prior) Measured(pass, Step::kPrior, [&] { RunPrior(pass, problem, &state); });
     // Asked before the outputs are written: afterwards the image has them.
     const bool prior_preview = pass.prior_preview && !sink_.HasFinalOutput(problem.ref);
@@ -517,6 +522,35 @@ class PassRunner {
     return UpsampleStateNearest(cache_.Take(ref), coarse_cam, cam);
   }
 
+  // The output filter's tests (--PatchMatchStereo.filter_*) for the sources of `params`.
+  core::FilterParams OutputFilter(const core::PassParams& params) const {
+    core::FilterParams filter;
+    filter.min_ncc = static_cast<float>(pm_.filter_min_ncc);
+    filter.min_triangulation_angle =
+        static_cast<float>(pm_.filter_min_triangulation_angle) * kDegreesToRadians;
+    filter.min_num_consistent = std::min(pm_.filter_min_num_consistent, params.num_src);
+    filter.geom_max_error = static_cast<float>(pm_.filter_geom_consistency_max_cost);
+    filter.textureless_by_geometry = msp_.filter_textureless_by_geometry ? 1 : 0;
+    return filter;
+  }
+
+  // Planar prior of one image after a geometric pass (docs/method.md section
+  // 2.12), bounded by the segment planes' colour segments.
+  void RunPlanarPrior(const core::PassParams& params, const Problem& problem, PixelState* state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (state->segments.empty()) {
+      state->segments = SegmentPlaneLabels(level_->color.at(problem.ref), segmenter_);
+    }
+    const PlanarPriorReport r =
+        ApplyPlanarPrior(params, OutputFilter(params), state->segments, threads_);
+    const double pixels = params.state.width * params.state.height;
+    Logf(kLogDetail,
+         "  planar prior: %.1f%% of pixels confirmed, %d triangles, %.1f%% offered, %.1f%% "
+         "took; %.2f s\n",
+         100.0 * r.num_evidence / pixels, r.num_triangles, 100.0 * r.num_offered / pixels,
+         100.0 * r.num_taken / pixels, SecondsSince(t0));
+  }
+
   // The maps of the pass, without the open sky (`open_sky`, 1 = no surface;
   // may be empty).
   void WriteOutputs(const Pass& pass, const core::PassParams& params, const Problem& problem,
@@ -530,17 +564,15 @@ class PassRunner {
       sink_.Write(problem.ref, "photometric", depth, normal);
       return;
     }
-    core::FilterParams filter;
-    filter.min_ncc = static_cast<float>(pm_.filter_min_ncc);
-    filter.min_triangulation_angle =
-        static_cast<float>(pm_.filter_min_triangulation_angle) * kDegreesToRadians;
-    filter.min_num_consistent = std::min(pm_.filter_min_num_consistent, params.num_src);
-    filter.geom_max_error = static_cast<float>(pm_.filter_geom_consistency_max_cost);
-    filter.textureless_by_geometry = msp_.filter_textureless_by_geometry ? 1 : 0;
+    const core::FilterParams filter = OutputFilter(params);
     DenseMap stages;
     ExtractMaps(params, pm_.filter ? &filter : nullptr, threads_, &depth, &normal,
                 pass.map_previews ? &stages : nullptr);
     ClearOpenSky(open_sky, &depth, &normal);
+    if (msp_.normals_from_depth) {
+      NormalsFromDepth(params.ref_camera, depth,
+                       DepthNormalRadius(depth.width, depth.height), threads_, &normal);
+    }
     // Pictures before maps: a run stopped between them redoes the view, so
     // every view with final maps has its pictures.
     if (pass.map_previews) {

@@ -47,8 +47,10 @@ struct FilterPixel {
   bool by_geometry = false;
 };
 
-MSP_HD FilterPixel PrepareFilterPixel(const PassParams& p, const FilterParams& f, int col,
-                                      int row) {
+// With `geometry_only`, every pixel is judged as a weakly textured one under
+// textureless_by_geometry: by the sources' depth maps, without NCC.
+MSP_HD FilterPixel PrepareFilterPixel(const PassParams& p, const FilterParams& f, int col, int row,
+                                      bool geometry_only = false) {
   FilterPixel q;
   q.h = p.state.Get(p.state.Index(col, row));
   if (!(q.h.depth > 0.0f)) return q;
@@ -56,8 +58,9 @@ MSP_HD FilterPixel PrepareFilterPixel(const PassParams& p, const FilterParams& f
   if (!q.plane.valid) return q;
   q.X = CamToWorld(p.ref_camera, BackProject(p.ref_camera, static_cast<float>(col),
                                              static_cast<float>(row), q.h.depth));
-  PrepareWindow(p, col, row, &q.window);
-  q.by_geometry = f.textureless_by_geometry && p.geometric && IsWeaklyTextured(p, col, row);
+  q.by_geometry =
+      geometry_only || (f.textureless_by_geometry && p.geometric && IsWeaklyTextured(p, col, row));
+  if (!q.by_geometry) PrepareWindow(p, col, row, &q.window);
   q.valid = true;
   return q;
 }
@@ -83,6 +86,19 @@ MSP_HD ViewTests TestView(const PassParams& p, const FilterParams& f, const Filt
 // Number of source views consistent with the pixel's plane.
 MSP_HD int CountConsistentViews(const PassParams& p, const FilterParams& f, int col, int row) {
   const FilterPixel q = PrepareFilterPixel(p, f, col, row);
+  if (!q.valid) return 0;
+  int count = 0;
+  for (int j = 0; j < p.num_src; ++j) count += TestView(p, f, q, j, col, row, false).All() ? 1 : 0;
+  return count;
+}
+
+// Number of sources whose depth maps bring the pixel's depth back within
+// geom_max_error, at a triangulation angle of at least min_triangulation_angle
+// (geometric passes; 0 otherwise): the other views' evidence for its plane,
+// without the photometric test.
+MSP_HD int CountAgreeingViews(const PassParams& p, const FilterParams& f, int col, int row) {
+  if (!p.geometric) return 0;
+  const FilterPixel q = PrepareFilterPixel(p, f, col, row, true);
   if (!q.valid) return 0;
   int count = 0;
   for (int j = 0; j < p.num_src; ++j) count += TestView(p, f, q, j, col, row, false).All() ? 1 : 0;

@@ -1,5 +1,6 @@
 #include "patch_match/open_sky.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -11,13 +12,16 @@
 namespace msp {
 namespace {
 
-// Sky-coloured: bright and blue, as a daylight sky (the bundled scene's sky:
-// grey 0.89, blue above red by 0.12 of full scale; its walls at most 0.78),
-// or white-out, as an overexposed sky or window. White walls are bright too
-// but not blue under room light (office-rgbd: blue below red by 0.04-0.34).
+// Where the only edges are untextured surfaces' outlines (a window frame in
+// a blank wall), the matched outline cannot tell a crease from a contour;
+// there the colour helps: a segment bright and blue as a daylight sky (the
+// bundled scene's sky: grey 0.89, blue above red by 0.12 of full scale; its
+// walls at most 0.78) without an accepted plane of its own is sky. White
+// walls are bright too, but not blue under room light (office-rgbd: blue
+// below red by 0.04-0.34), and a white-out is no sky colour: a white wall
+// reaching the top border is as bright.
 constexpr double kMinMeanGrey = 0.8;
 constexpr double kMinBlueOverRed = 0.02;
-constexpr double kMinWhiteOutGrey = 0.95;
 // Untextured: at most this share of the segment's matching windows holds
 // texture (the band along its outline does: the windows straddle the edge).
 constexpr double kMaxTexturedShare = 0.5;
@@ -40,6 +44,16 @@ constexpr double kMaxSurroundedShare = 0.5;
 // this many pixels deep, whose grey is nearer its own mean than their
 // segment's.
 constexpr int kMixedPixelDepth = 2;
+// Evidence of a depth: a matched edge pixel as the segment planes' support
+// (segment_planes.cc: cost below 0.3, edge strength at least 0.03), and at
+// least as many of them as a segment plane's inliers (12) on its own.
+constexpr float kEvidenceCost = 0.3f;
+constexpr float kEvidenceEdge = 0.03f;
+constexpr long kMinOwnEvidence = 12;
+// Texture in two directions: gradients across the window's main direction
+// of at least this RMS (intensity per pixel). Camera noise of 2 grey levels
+// gives about 0.006, the scene's textures 0.03 and more.
+constexpr double kMinCrossGradient = 0.015;
 
 struct SegmentStats {
   long pixels = 0;
@@ -49,6 +63,8 @@ struct SegmentStats {
   double blue_over_red = 0.0;
   long outline = 0;           // pixels of other segments 4-adjacent to it (counted per adjacency)
   long outline_on_plane = 0;  // of those, holding its plane
+  long evidence = 0;  // matched edge pixels at or next to it (on its plane, when it has one)
+  long contour = 0;   // of those, on a textured surface (HasCrossTexture): not its evidence
 };
 
 // Whether the pixel at (col, row) holds `plane`: see kSamePlaneCos, kSameDepth.
@@ -112,6 +128,151 @@ void TakeMixedPixels(const core::PassParams& params, const std::vector<int32_t>&
   }
 }
 
+// Whether the pixel at (col, row) is matched evidence of a depth: an edge
+// whose window has texture and matches (the segment planes' support rule,
+// docs/method.md section 2.10).
+bool IsEvidence(const core::PassParams& params, const std::vector<float>& texture, int col,
+                int row) {
+  const core::PixelStateView& s = params.state;
+  const int i = s.Index(col, row);
+  return texture[i] >= core::kTexturedWindowStd && s.depth[i] > 0.0f && s.cost[i] < kEvidenceCost &&
+         core::EdgeStrength(params.ref_image, col, row) >= kEvidenceEdge;
+}
+
+// Whether the depth the pixel at (col, row) holds lies on `plane` (within kSameDepth).
+bool DepthOnPlane(const core::PassParams& params, int col, int row, const SegmentPlane& plane) {
+  const core::PixelStateView& s = params.state;
+  const float held = s.depth[s.Index(col, row)];
+  const float depth =
+      core::HypothesisOnPlane(params.ref_camera, col, row, plane.normal, plane.point).depth;
+  return held > 0.0f && depth > 0.0f && std::fabs(depth - held) <= kSameDepth * held;
+}
+
+// Whether the matching window at (col, row) has texture in two directions:
+// the weaker eigenvalue of its gradient structure tensor (the mean of
+// g g^T over the window, central differences) at least kMinCrossGradient
+// squared. A crease, a contact line, a roofline or a window frame against a
+// blank region is one straight edge: its gradients all point one way. A
+// textured surface has gradients in every direction, and so has the window
+// of an edge pixel on it or next to it.
+bool HasCrossTexture(const core::PassParams& params, int col, int row) {
+  const core::ImageView& image = params.ref_image;
+  const int r = params.ncc.window_radius;
+  double xx = 0.0, yy = 0.0, xy = 0.0;
+  int n = 0;
+  for (int y = std::max(1, row - r); y <= std::min(image.height - 2, row + r); ++y) {
+    for (int x = std::max(1, col - r); x <= std::min(image.width - 2, col + r); ++x) {
+      const double gx = 0.5 * (image.At(x + 1, y) - image.At(x - 1, y));
+      const double gy = 0.5 * (image.At(x, y + 1) - image.At(x, y - 1));
+      xx += gx * gx;
+      yy += gy * gy;
+      xy += gx * gy;
+      ++n;
+    }
+  }
+  if (n == 0) return false;
+  xx /= n;
+  yy /= n;
+  xy /= n;
+  const double half_trace = 0.5 * (xx + yy);
+  const double weaker = half_trace - std::sqrt(0.25 * (xx - yy) * (xx - yy) + xy * xy);
+  return weaker >= kMinCrossGradient * kMinCrossGradient;
+}
+
+// Counts, for the untextured segments (`candidate`), the evidence pixels at
+// them or 4-adjacent to them (on their plane, for a segment with an
+// accepted one), and of those the contour pixels: those on a textured
+// surface. An edge between a textured surface and an untextured region is
+// the textured surface's: its texture fixes its depth there, on both sides
+// of the edge, whether the untextured region meets it at a crease or lies
+// far behind it (an occluding contour); the images cannot tell which, so
+// the edge is evidence for the textured side only.
+void CountEvidence(const core::PassParams& params, const std::vector<int32_t>& labels,
+                   const std::vector<SegmentPlane>& planes, const std::vector<uint8_t>& candidate,
+                   const std::vector<float>& texture, std::vector<SegmentStats>* stats) {
+  const core::PixelStateView& s = params.state;
+  for (int row = 0; row < s.height; ++row) {
+    for (int col = 0; col < s.width; ++col) {
+      if (!IsEvidence(params, texture, col, row)) continue;
+      const bool on_textured_surface = HasCrossTexture(params, col, row);
+      int ids[5];
+      int num_ids = 0;
+      const auto add = [&](int c, int r) {
+        const int id = labels[s.Index(c, r)];
+        if (id > 0 && std::find(ids, ids + num_ids, id) == ids + num_ids) ids[num_ids++] = id;
+        return false;
+      };
+      add(col, row);
+      VisitNeighbours4(s.width, s.height, col, row, add);
+      for (int k = 0; k < num_ids; ++k) {
+        const int id = ids[k];
+        if (!candidate[id]) continue;
+        if (planes[id].accepted && !DepthOnPlane(params, col, row, planes[id])) continue;
+        ++(*stats)[id].evidence;
+        (*stats)[id].contour += on_textured_surface;
+      }
+    }
+  }
+}
+
+// Whether an untextured segment has evidence of a surface of its own: at
+// least kMinOwnEvidence evidence pixels that are not a textured surface's
+// contour (a crease or contact line between untextured surfaces counts for
+// both), and, with an accepted plane, a plane that the pixels around it do
+// not hold (else it is a hole in the surface around it: its plane is its
+// neighbour's carried on). A daylight sky's colour (kMinMeanGrey) without
+// an accepted plane decides where the outline alone cannot.
+bool HasEvidence(const SegmentPlane& plane, const SegmentStats& segment) {
+  const bool surrounded =
+      plane.accepted && segment.outline_on_plane > kMaxSurroundedShare * segment.outline;
+  if (surrounded) return false;
+  const double n = static_cast<double>(segment.pixels);
+  const bool sky_coloured =
+      segment.grey >= kMinMeanGrey * n && segment.blue_over_red >= kMinBlueOverRed * n;
+  if (sky_coloured && !plane.accepted) return false;
+  return segment.evidence - segment.contour >= kMinOwnEvidence;
+}
+
+// The segments of `no_evidence` that are open: touching the image border
+// (kMinBorderPixels), or 4-adjacent to an open one (the sky cut into
+// several segments by a gradient or clouds). Index = segment id.
+std::vector<uint8_t> OpenRegions(const core::PassParams& params, const std::vector<int32_t>& labels,
+                                 const std::vector<SegmentStats>& stats,
+                                 const std::vector<uint8_t>& no_evidence) {
+  const core::PixelStateView& s = params.state;
+  const size_t n = no_evidence.size();
+  std::vector<std::vector<int32_t>> adjacent(n);
+  for (int row = 0; row < s.height; ++row) {
+    for (int col = 0; col < s.width; ++col) {
+      const int id = labels[s.Index(col, row)];
+      if (id <= 0 || !no_evidence[id]) continue;
+      VisitNeighbours4(s.width, s.height, col, row, [&](int c, int r) {
+        const int other = labels[s.Index(c, r)];
+        if (other > 0 && other != id && no_evidence[other]) adjacent[id].push_back(other);
+        return false;
+      });
+    }
+  }
+  std::vector<uint8_t> open(n, 0);
+  std::vector<int32_t> queue;
+  for (size_t id = 1; id < n; ++id) {
+    if (no_evidence[id] && stats[id].border >= kMinBorderPixels) {
+      open[id] = 1;
+      queue.push_back(static_cast<int32_t>(id));
+    }
+  }
+  while (!queue.empty()) {
+    const int32_t id = queue.back();
+    queue.pop_back();
+    for (const int32_t other : adjacent[id]) {
+      if (open[other]) continue;
+      open[other] = 1;
+      queue.push_back(other);
+    }
+  }
+  return open;
+}
+
 }  // namespace
 
 std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMap& color,
@@ -132,30 +293,23 @@ std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMa
       segment.blue_over_red += color.At(row, col, 2) - color.At(row, col, 0);
     }
   }
-  // Bright, untextured and open to the border: then the plane decides.
   std::vector<uint8_t> candidate(planes.size(), 0);
   bool any = false;
   for (size_t id = 1; id < planes.size(); ++id) {
     const SegmentStats& segment = stats[id];
-    const double n = static_cast<double>(segment.pixels);
-    const bool sky_coloured =
-        (segment.grey >= kMinMeanGrey * n && segment.blue_over_red >= kMinBlueOverRed * n) ||
-        segment.grey >= kMinWhiteOutGrey * n;
-    candidate[id] = segment.pixels > 0 && segment.border >= kMinBorderPixels && sky_coloured &&
-                    segment.textured <= kMaxTexturedShare * n;
+    candidate[id] = segment.pixels > 0 && segment.textured <= kMaxTexturedShare * segment.pixels;
     any = any || candidate[id];
   }
   if (!any) return {};
   CountOutlines(params, labels, planes, candidate, &stats);
-  std::vector<uint8_t> sky_segment(planes.size(), 0);
-  any = false;
+  CountEvidence(params, labels, planes, candidate, texture, &stats);
+  std::vector<uint8_t> no_evidence(planes.size(), 0);
   for (size_t id = 1; id < planes.size(); ++id) {
-    const SegmentStats& segment = stats[id];
-    const bool own_plane =
-        planes[id].accepted && segment.outline_on_plane <= kMaxSurroundedShare * segment.outline;
-    sky_segment[id] = candidate[id] && !own_plane;
-    any = any || sky_segment[id];
+    no_evidence[id] = candidate[id] && !HasEvidence(planes[id], stats[id]);
   }
+  std::vector<uint8_t> sky_segment = OpenRegions(params, labels, stats, no_evidence);
+  any = false;
+  for (size_t id = 1; id < planes.size(); ++id) any = any || sky_segment[id];
   if (!any) return {};
   // Per pixel, the open-sky segment it belongs to (0: none).
   std::vector<int32_t> sky_of(labels.size(), 0);

@@ -1,7 +1,9 @@
 // Open sky (docs/method.md section 2.11): segments that nothing in the images
-// says are a surface. Bright, untextured and open to the image border, with
-// no plane mostly their own after the segment planes' support rule: the sky above
-// a roofline or through a window, a white-out background. Every view sees the
+// says are a surface. Untextured and open to the image border (or joined to
+// such a segment), with no evidence of a depth of their own: no matched edge
+// but the contours of textured surfaces in front of them, or a plane that
+// is only the surrounding surface's carried on. The sky above a roofline or
+// through a window, whatever its colour, a blank background. Every view sees the
 // same smooth brightness there whatever depth it is given, so planes
 // propagated from the surface around agree across the views and pass the
 // geometric checks; only the absence of evidence tells. The passes leave
@@ -18,13 +20,16 @@
 
 namespace msp {
 
-// 1 at the pixels of every segment of `labels` (ids 1..K) that touches the
-// image border, is sky-coloured (mean grey of `params.ref_image` and mean
-// colour of `color`, the reference image's RGB planes at the pass's level:
-// bright and blue, or white-out), is mostly untextured (`texture`:
-// core::WindowTextureStd per pixel), and has no plane of its own (`planes`,
-// FitSegmentPlanes: none accepted, or one the pixels around its outline
-// mostly hold); then the mixed pixels of its outline. Empty when no pixel is.
+// 1 at the pixels of every segment of `labels` (ids 1..K) that is mostly
+// untextured (`texture`: core::WindowTextureStd per pixel), has no evidence
+// of a depth of its own, and touches the image border or a segment that is
+// marked: its only matched edges (`params.state`'s pixels on an edge with a
+// matching, textured window) are on textured surfaces, or its plane
+// (`planes`, FitSegmentPlanes) is one the pixels around its outline mostly
+// hold, or it has no accepted plane and a daylight sky's colour (mean grey
+// of `params.ref_image`, mean colour of `color`, the reference image's RGB
+// planes at the pass's level). Then the mixed pixels of its outline. Empty
+// when no pixel is.
 std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMap& color,
                                    const std::vector<int32_t>& labels,
                                    const std::vector<SegmentPlane>& planes,

@@ -13,41 +13,49 @@
 namespace msp {
 namespace {
 
-// An accepted plane through (0, 0, 2) with normal `normal`.
-SegmentPlane AcceptedPlane(core::Vec3 normal) {
+// An accepted plane through the point at depth 2 on the ray of pixel
+// (`col`, 15) with normal `normal`.
+SegmentPlane AcceptedPlane(core::Vec3 normal, float col = 20.0f) {
+  const core::Camera camera = test::CentredCamera(40, 30);
   SegmentPlane plane;
   plane.accepted = true;
   plane.num_inliers = plane.num_own = 100;
   plane.normal = core::Normalized(normal);
-  plane.point = core::Vec3{0.0f, 0.0f, 2.0f};
+  plane.point = core::BackProject(camera, col, 15.0f, 2.0f);
   return plane;
 }
 
-// A plane of its own: tilted 30 degrees against the plane the pixels hold.
-SegmentPlane OwnPlane() { return AcceptedPlane(core::Vec3{0.577f, 0.0f, -1.0f}); }
+// A plane of its own: tilted 30 degrees against the plane the pixels hold,
+// through the pixels' depth at column `col` (where its evidence lies).
+SegmentPlane OwnPlane(float col = 20.0f) {
+  return AcceptedPlane(core::Vec3{0.577f, 0.0f, -1.0f}, col);
+}
 // The plane every pixel around holds.
 SegmentPlane SurroundingPlane() { return AcceptedPlane(core::Vec3{0.0f, 0.0f, -1.0f}); }
 
+constexpr float kTextured = 2.0f * core::kTexturedWindowStd;
+
 // A 40x30 image cut into vertical strips of 8 columns, segments 1..5 from
-// the left; every strip reaches the top and bottom borders unless `closed`.
+// the left; every strip reaches the top and bottom borders. Untextured and
+// without a plane unless a test says otherwise.
 struct Strips {
   static constexpr int kWidth = 40, kHeight = 30, kStrip = 8;
-  std::vector<float> grey = std::vector<float>(kWidth * kHeight, 0.9f);  // bright
+  std::vector<float> grey = std::vector<float>(kWidth * kHeight, 0.9f);
   std::vector<int32_t> labels = std::vector<int32_t>(kWidth * kHeight, 0);
-  std::vector<float> texture = std::vector<float>(kWidth * kHeight, 0.0f);  // untextured
-  std::vector<SegmentPlane> planes = std::vector<SegmentPlane>(6);
-  // Every pixel holds the plane z = 2 facing the camera.
+  std::vector<float> texture = std::vector<float>(kWidth * kHeight, 0.0f);
+  std::vector<SegmentPlane> planes = std::vector<SegmentPlane>(7);
+  // Every pixel holds the plane z = 2 facing the camera, and matches.
   std::vector<float> depth = std::vector<float>(kWidth * kHeight, 2.0f);
   std::vector<float> normal = std::vector<float>(3 * kWidth * kHeight, 0.0f);
   std::vector<float> cost = std::vector<float>(kWidth * kHeight, 0.0f);
   std::vector<uint32_t> mask = std::vector<uint32_t>(kWidth * kHeight, 0u);
-  // RGB planes: a pale blue sky colour everywhere.
+  // RGB planes: a neutral white everywhere.
   DenseMap color = DenseMap(kWidth, kHeight, 3);
   core::PassParams params;
 
   Strips() {
     for (int i = 0; i < kWidth * kHeight; ++i) normal[2 * kWidth * kHeight + i] = -1.0f;
-    SetColor(0, 0.85f, 0.9f, 0.95f);
+    SetColor(0, 0.9f, 0.9f, 0.9f);
     for (int row = 0; row < kHeight; ++row) {
       for (int col = 0; col < kWidth; ++col) labels[row * kWidth + col] = 1 + col / kStrip;
     }
@@ -70,28 +78,64 @@ struct Strips {
       }
     }
   }
+  // A matched edge between the strips left and right of column `col` (a
+  // multiple of kStrip) in rows [row0, row1): the windows of the columns on
+  // both sides straddle it. The strips' greys must differ.
+  void Edge(int col, int row0 = 0, int row1 = kHeight) {
+    for (int row = row0; row < row1; ++row) {
+      texture[row * kWidth + col - 1] = kTextured;
+      texture[row * kWidth + col] = kTextured;
+    }
+  }
+  // Segment `id` textured: a checkerboard of 2x2 blocks around its grey
+  // (gradients in both directions), and its windows so.
+  void Texture(int id) {
+    for (size_t i = 0; i < labels.size(); ++i) {
+      if (labels[i] != id) continue;
+      const int col = static_cast<int>(i) % kWidth, row = static_cast<int>(i) / kWidth;
+      grey[i] += (col / 2 + row / 2) % 2 == 0 ? 0.1f : -0.1f;
+      texture[i] = kTextured;
+    }
+  }
+  // Segment `id`'s pixels hold a plane tilted 30 degrees against z = 2.
+  void HoldTilted(int id) {
+    for (size_t i = 0; i < labels.size(); ++i) {
+      if (labels[i] != id) continue;
+      normal[i] = 0.5f;
+      normal[2 * labels.size() + i] = -0.866f;
+    }
+  }
   std::vector<uint8_t> Run() {
     params.state = core::PixelStateView{depth.data(), normal.data(), cost.data(),
                                         mask.data(),  kWidth,        kHeight};
     params.ref_camera = test::CentredCamera(kWidth, kHeight);
     params.ref_image = core::ImageView{grey.data(), kWidth, kHeight, kWidth};
+    params.ncc.window_radius = 2;
+    params.ncc.window_step = 1;
     return OpenSkyPixels(params, color, labels, planes, texture);
   }
   bool Marked(const std::vector<uint8_t>& sky, int id) const {
     for (size_t i = 0; i < labels.size(); ++i) {
-      if (labels[i] == id && !sky[i]) return false;
+      if (labels[i] == id && (sky.empty() || !sky[i])) return false;
+    }
+    return true;
+  }
+  bool Untouched(const std::vector<uint8_t>& sky, int id) const {
+    for (size_t i = 0; i < labels.size(); ++i) {
+      if (labels[i] == id && !sky.empty() && sky[i]) return false;
     }
     return true;
   }
 };
 
-// Only the segment with no plane of its own that is bright, untextured and
-// open to the border is sky; each of the others misses one condition.
-TEST(OpenSky, BrightUntexturedOpenSegmentWithoutAPlaneIsSky) {
+// An untextured segment open to the border with no evidence of a depth is
+// sky; a segment with a matched crease, a textured one, and one closed off
+// behind a textured one are not.
+TEST(OpenSky, UntexturedOpenSegmentWithoutEvidenceIsSky) {
   Strips s;
-  s.planes[2] = OwnPlane();                        // 2: a plane of its own (a white wall)
-  s.Set(3, &s.grey, 0.5f);                         // 3: not bright
-  s.Set(4, &s.texture, core::kTexturedWindowStd);  // 4: textured
+  s.Set(3, &s.grey, 0.7f);
+  s.Edge(2 * Strips::kStrip);  // 2 | 3: a crease between two blank walls
+  s.Texture(4);
   // 5: closed: moved off the border by giving its border pixels to segment 4.
   for (int row = 0; row < Strips::kHeight; ++row) {
     for (int col = 4 * Strips::kStrip; col < Strips::kWidth; ++col) {
@@ -105,31 +149,104 @@ TEST(OpenSky, BrightUntexturedOpenSegmentWithoutAPlaneIsSky) {
   int marked = 0;
   for (size_t i = 0; i < sky.size(); ++i) {
     marked += sky[i];
-    if (sky[i]) EXPECT_EQ(s.labels[i], 1);
+    if (sky[i]) {
+      EXPECT_EQ(s.labels[i], 1);
+    }
   }
   EXPECT_EQ(marked, Strips::kStrip * Strips::kHeight);
 }
 
+// The region behind an occluding contour: untextured, its only matched
+// pixels the edge of the textured surface in front. A plane fitted through
+// that edge is no evidence of its own: the region is left empty.
+TEST(OpenSky, RegionBehindAnOccludingContourGetsNothing) {
+  Strips s;
+  s.Set(2, &s.grey, 0.5f);
+  for (int id = 2; id <= 5; ++id) s.Texture(id);
+  s.Edge(Strips::kStrip);
+  s.planes[2] = SurroundingPlane();
+  s.planes[1] = OwnPlane(Strips::kStrip - 0.5f);  // through the contour, not held around
+  EXPECT_TRUE(s.Marked(s.Run(), 1));
+  // The same edge between two untextured surfaces is a crease, evidence
+  // for both: the region keeps its plane.
+  s.Set(2, &s.texture, 0.0f);
+  s.Set(2, &s.grey, 0.5f);
+  s.Edge(Strips::kStrip);
+  EXPECT_TRUE(s.Untouched(s.Run(), 1));
+}
+
+// A blank wall framed by a crease (left) and a contact line (right) with
+// other untextured surfaces keeps its plane, and so do they.
+TEST(OpenSky, BlankWallFramedByCreasesKeepsItsPlane) {
+  Strips s;
+  s.Set(1, &s.grey, 0.6f);
+  s.Set(2, &s.grey, 0.8f);
+  s.Set(3, &s.grey, 0.7f);
+  s.Edge(Strips::kStrip);
+  s.Edge(2 * Strips::kStrip);
+  s.planes[2] = SurroundingPlane();
+  s.HoldTilted(1);
+  s.HoldTilted(3);
+  for (int id = 4; id <= 5; ++id) s.Texture(id);
+  EXPECT_TRUE(s.Run().empty());
+}
+
+// A room seen from inside: a white wall reaches the top border; its corners
+// with the walls beside it are vertical lines, which give it no plane, and
+// its contact line with the floor is its only other edge. It is as bright
+// as a white-out sky, but the matched corners and contact line are evidence
+// that a surface is there: it keeps its depth.
+TEST(OpenSky, WhiteWallReachingTheTopBorderKeepsItsDepth) {
+  Strips s;
+  const int floor_row = 24;
+  for (int row = floor_row; row < Strips::kHeight; ++row) {
+    for (int col = 0; col < Strips::kWidth; ++col) s.labels[row * Strips::kWidth + col] = 6;
+  }
+  s.Set(1, &s.grey, 0.85f);
+  s.Set(2, &s.grey, 0.97f);
+  s.SetColor(2, 0.98f, 0.97f, 0.94f);
+  s.Set(3, &s.grey, 0.8f);
+  s.Set(6, &s.grey, 0.5f);
+  s.Edge(Strips::kStrip, 0, floor_row);
+  s.Edge(2 * Strips::kStrip, 0, floor_row);
+  for (int col = Strips::kStrip; col < 2 * Strips::kStrip; ++col) {
+    s.texture[(floor_row - 1) * Strips::kWidth + col] = kTextured;
+    s.texture[floor_row * Strips::kWidth + col] = kTextured;
+  }
+  for (int id = 4; id <= 5; ++id) s.Texture(id);
+  EXPECT_TRUE(s.Untouched(s.Run(), 2));
+}
+
+// The sky cut into several segments (a gradient, clouds): an untextured
+// segment without evidence that does not reach the border is sky when it
+// meets an open one.
+TEST(OpenSky, SkyReachesAcrossItsSegments) {
+  Strips s;
+  for (int id = 1; id <= 3; ++id) s.Texture(id);
+  for (int row = 0; row < Strips::kHeight; ++row) {
+    for (int col = 4 * Strips::kStrip; col < Strips::kWidth; ++col) {
+      const bool border = row == 0 || row + 1 == Strips::kHeight || col + 1 == Strips::kWidth;
+      if (border) s.labels[row * Strips::kWidth + col] = 4;
+    }
+  }
+  const std::vector<uint8_t> sky = s.Run();
+  EXPECT_TRUE(s.Marked(sky, 4));
+  EXPECT_TRUE(s.Marked(sky, 5));
+  EXPECT_TRUE(s.Untouched(sky, 3));
+}
+
 // An accepted plane that the pixels all around the segment hold (the sky in
-// a window, given the wall's plane) is no evidence of a surface of its own.
+// a window, given the wall's plane) is no evidence of a surface of its own,
+// even where the window's outline is matched.
 TEST(OpenSky, APlaneThePixelsAroundHoldIsNoEvidence) {
   Strips s;
-  for (int id = 2; id <= 5; ++id) s.planes[id] = OwnPlane();
+  s.Set(2, &s.grey, 0.7f);
+  s.Edge(Strips::kStrip);
+  for (int id = 3; id <= 5; ++id) s.Texture(id);
   s.planes[1] = SurroundingPlane();
   EXPECT_TRUE(s.Marked(s.Run(), 1));
-  s.planes[1] = OwnPlane();
-  EXPECT_TRUE(s.Run().empty());
-  // Half of the outline holding it is not yet surrounded: segment 2's
-  // pixels in the top half hold segment 1's tilted plane.
-  for (int row = 0; row < Strips::kHeight / 2; ++row) {
-    const int i = row * Strips::kWidth + Strips::kStrip;
-    const core::PlaneHypothesis h = core::HypothesisOnPlane(
-        s.params.ref_camera, Strips::kStrip, row, s.planes[1].normal, s.planes[1].point);
-    s.depth[i] = h.depth;
-    s.normal[i] = h.normal.x;
-    s.normal[2 * Strips::kWidth * Strips::kHeight + i] = h.normal.z;
-  }
-  EXPECT_TRUE(s.Run().empty());
+  s.HoldTilted(2);  // the outline no longer holds it: a crease
+  EXPECT_TRUE(s.Untouched(s.Run(), 1));
 }
 
 // The outline's mixed pixels: the sky takes the neighbours (two deep) whose
@@ -137,7 +254,7 @@ TEST(OpenSky, APlaneThePixelsAroundHoldIsNoEvidence) {
 TEST(OpenSky, TakesTheMixedPixelsOfItsOutline) {
   Strips s;
   for (int id = 2; id <= 5; ++id) s.Set(id, &s.grey, 0.5f);  // darker surfaces
-  for (int id = 2; id <= 5; ++id) s.planes[id] = OwnPlane();
+  for (int id = 2; id <= 5; ++id) s.Texture(id);
   const int row = 10, first = Strips::kStrip;  // segment 2 starts at column 8
   for (int col = first; col < first + 4; ++col) s.grey[row * Strips::kWidth + col] = 0.8f;
   s.grey[(row + 1) * Strips::kWidth + first] = 0.6f;  // nearer its own segment
@@ -149,20 +266,46 @@ TEST(OpenSky, TakesTheMixedPixelsOfItsOutline) {
   EXPECT_EQ(sky[(row + 1) * Strips::kWidth + first], 0);
 }
 
-// A bright white wall under room light is warm, not blue: not sky, unless it
-// is white-out.
-TEST(OpenSky, BrightButNotBlueIsNotSkyUnlessWhiteOut) {
+// The sky's colour does not decide: a deep blue, an overcast grey, a warm
+// white and a dark segment without evidence are all empty; the same
+// segment with a matched crease is a surface whatever its colour.
+TEST(OpenSky, ColourDoesNotDecide) {
+  const float colours[4][3] = {
+      {0.3f, 0.47f, 0.86f}, {0.8f, 0.8f, 0.82f}, {0.98f, 0.96f, 0.9f}, {0.2f, 0.2f, 0.25f}};
+  for (const auto& c : colours) {
+    Strips s;
+    s.SetColor(1, c[0], c[1], c[2]);
+    s.Set(1, &s.grey, (c[0] + c[1] + c[2]) / 3.0f);
+    for (int id = 2; id <= 5; ++id) s.Texture(id);
+    EXPECT_TRUE(s.Marked(s.Run(), 1));
+    s.Set(2, &s.texture, 0.0f);
+    s.Set(2, &s.grey, 0.5f);
+    s.Edge(Strips::kStrip);
+    s.HoldTilted(2);
+    EXPECT_TRUE(s.Untouched(s.Run(), 1));
+  }
+}
+
+// Where the only matched edge is an untextured outline (a window frame in
+// a blank wall), it cannot tell a crease from a contour; a daylight sky's
+// colour (bright and blue) then decides for a segment without an accepted
+// plane, never for one with a plane of its own.
+TEST(OpenSky, SkyColourHelpsWhereTheOutlineIsUntextured) {
   Strips s;
-  for (int id = 2; id <= 5; ++id) s.planes[id] = OwnPlane();
-  s.SetColor(1, 0.95f, 0.9f, 0.85f);
-  EXPECT_TRUE(s.Run().empty());
-  s.Set(1, &s.grey, 0.96f);
-  EXPECT_TRUE(s.Marked(s.Run(), 1));
+  s.Set(2, &s.grey, 0.7f);
+  s.Edge(Strips::kStrip);
+  for (int id = 3; id <= 5; ++id) s.Texture(id);
+  s.HoldTilted(2);
+  EXPECT_TRUE(s.Untouched(s.Run(), 1));  // white: the outline is evidence
+  s.SetColor(1, 0.85f, 0.9f, 0.95f);
+  EXPECT_TRUE(s.Marked(s.Run(), 1));  // sky blue, no plane: sky
+  s.planes[1] = SurroundingPlane();
+  EXPECT_TRUE(s.Untouched(s.Run(), 1));  // sky blue with a plane of its own
 }
 
 TEST(OpenSky, NothingMarkedGivesAnEmptyMask) {
   Strips s;
-  for (SegmentPlane& plane : s.planes) plane = OwnPlane();
+  for (int id = 1; id <= 5; ++id) s.Texture(id);
   EXPECT_TRUE(s.Run().empty());
 }
 

@@ -5,9 +5,11 @@
 #include <stdexcept>
 
 #include "base/pixel_neighbours.h"
+#include "core/patch_match/local_refine.h"
 #include "core/patch_match/map_stage.h"
 #include "core/patch_match/segment_plane.h"
 #include "core/patch_match/window_texture.h"
+#include "patch_match/ramp_free_texture.h"
 
 namespace msp {
 namespace {
@@ -54,6 +56,19 @@ constexpr long kMinOwnEvidence = 12;
 // of at least this RMS (intensity per pixel). Camera noise of 2 grey levels
 // gives about 0.006, the scene's textures 0.03 and more.
 constexpr double kMinCrossGradient = 0.015;
+// Texture beyond a ramp (ramp_free_texture.h): half the window texture's
+// bound, since a ramp takes much of a step's variance in a small window (a
+// crease of 0.1 leaves about 0.02 in an 11x11 one); camera noise of a grey
+// level or two leaves 0.004-0.008, a soft cloud's edge about as little.
+constexpr double kMinRampFreeTexture = 0.5 * core::kTexturedWindowStd;
+// Texture at infinity: a window that matches the views on a plane this many
+// times beyond the depth range (the views' rotation alone) with a
+// photometric cost below its own plane's plus kInfinityMargin fixes no
+// finite depth (a cloud, a far skyline). Decided per segment on up to
+// kInfinitySamples of its pixels, spread in scan order.
+constexpr float kInfinityDepth = 1000.0f;
+constexpr float kInfinityMargin = 0.05f;
+constexpr size_t kInfinitySamples = 32;
 
 struct SegmentStats {
   long pixels = 0;
@@ -65,6 +80,7 @@ struct SegmentStats {
   long outline_on_plane = 0;  // of those, holding its plane
   long evidence = 0;  // matched edge pixels at or next to it (on its plane, when it has one)
   long contour = 0;   // of those, on a textured surface (HasCrossTexture): not its evidence
+  std::vector<int> own_evidence;  // the others' pixel indices
 };
 
 // Whether the pixel at (col, row) holds `plane`: see kSamePlaneCos, kSameDepth.
@@ -131,11 +147,11 @@ void TakeMixedPixels(const core::PassParams& params, const std::vector<int32_t>&
 // Whether the pixel at (col, row) is matched evidence of a depth: an edge
 // whose window has texture and matches (the segment planes' support rule,
 // docs/method.md section 2.10).
-bool IsEvidence(const core::PassParams& params, const std::vector<float>& texture, int col,
+bool IsEvidence(const core::PassParams& params, const std::vector<uint8_t>& textured, int col,
                 int row) {
   const core::PixelStateView& s = params.state;
   const int i = s.Index(col, row);
-  return texture[i] >= core::kTexturedWindowStd && s.depth[i] > 0.0f && s.cost[i] < kEvidenceCost &&
+  return textured[i] && s.depth[i] > 0.0f && s.cost[i] < kEvidenceCost &&
          core::EdgeStrength(params.ref_image, col, row) >= kEvidenceEdge;
 }
 
@@ -179,6 +195,49 @@ bool HasCrossTexture(const core::PassParams& params, int col, int row) {
   return weaker >= kMinCrossGradient * kMinCrossGradient;
 }
 
+// Mean photometric cost of `h` over the views `weights` gives (no
+// geometric term: the other views' depth maps hold the planes propagated
+// into the sky too).
+float PhotometricCost(const core::PassParams& p, const core::RefWindow& w,
+                      const core::PlaneHypothesis& h, const float* weights) {
+  const core::PreparedPlane plane = core::PreparePlane(p, w.col, w.row, h);
+  if (!plane.valid) return core::kMaxCost;
+  float sum = 0.0f, total = 0.0f;
+  for (int j = 0; j < p.num_src; ++j) {
+    if (!(weights[j] > 0.0f)) continue;
+    sum += weights[j] * core::PhotometricViewCost(p, w, j, plane);
+    total += weights[j];
+  }
+  return total > 0.0f ? sum / total : core::kMaxCost;
+}
+
+// Whether pixel i's window matches at infinity about as well as on its own
+// plane (kInfinityDepth, kInfinityMargin): no evidence of a finite depth.
+bool MatchesAtInfinity(const core::PassParams& p, int i) {
+  const core::PixelStateView& s = p.state;
+  if (p.num_src <= 0 || core::IsUnlit(p, i) || !(s.depth[i] > 0.0f)) return false;
+  const int col = i % s.width, row = i / s.width;
+  float weights[core::kMaxSourceViews];
+  core::MaskWeights(p, s.mask[i], weights);
+  core::RefWindow w;
+  core::PrepareWindow(p, col, row, &w);
+  const float own = PhotometricCost(p, w, s.Get(i), weights);
+  const core::PlaneHypothesis far{kInfinityDepth * p.depth_max, core::Vec3{0.0f, 0.0f, -1.0f}};
+  return PhotometricCost(p, w, far, weights) < own + kInfinityMargin;
+}
+
+// Share of `pixels` (indices) that match at infinity, on up to
+// kInfinitySamples of them spread in scan order; 0 for none.
+double ShareAtInfinity(const core::PassParams& p, const std::vector<int>& pixels) {
+  if (pixels.empty()) return 0.0;
+  const size_t stride = (pixels.size() + kInfinitySamples - 1) / kInfinitySamples;
+  int at_infinity = 0, sampled = 0;
+  for (size_t k = 0; k < pixels.size(); k += stride, ++sampled) {
+    at_infinity += MatchesAtInfinity(p, pixels[k]);
+  }
+  return static_cast<double>(at_infinity) / sampled;
+}
+
 // Counts, for the untextured segments (`candidate`), the evidence pixels at
 // them or 4-adjacent to them (on their plane, for a segment with an
 // accepted one), and of those the contour pixels: those on a textured
@@ -189,11 +248,11 @@ bool HasCrossTexture(const core::PassParams& params, int col, int row) {
 // the edge is evidence for the textured side only.
 void CountEvidence(const core::PassParams& params, const std::vector<int32_t>& labels,
                    const std::vector<SegmentPlane>& planes, const std::vector<uint8_t>& candidate,
-                   const std::vector<float>& texture, std::vector<SegmentStats>* stats) {
+                   const std::vector<uint8_t>& textured, std::vector<SegmentStats>* stats) {
   const core::PixelStateView& s = params.state;
   for (int row = 0; row < s.height; ++row) {
     for (int col = 0; col < s.width; ++col) {
-      if (!IsEvidence(params, texture, col, row)) continue;
+      if (!IsEvidence(params, textured, col, row)) continue;
       const bool on_textured_surface = HasCrossTexture(params, col, row);
       int ids[5];
       int num_ids = 0;
@@ -208,8 +267,10 @@ void CountEvidence(const core::PassParams& params, const std::vector<int32_t>& l
         const int id = ids[k];
         if (!candidate[id]) continue;
         if (planes[id].accepted && !DepthOnPlane(params, col, row, planes[id])) continue;
-        ++(*stats)[id].evidence;
-        (*stats)[id].contour += on_textured_surface;
+        SegmentStats& segment = (*stats)[id];
+        ++segment.evidence;
+        segment.contour += on_textured_surface;
+        if (!on_textured_surface) segment.own_evidence.push_back(s.Index(col, row));
       }
     }
   }
@@ -222,7 +283,8 @@ void CountEvidence(const core::PassParams& params, const std::vector<int32_t>& l
 // not hold (else it is a hole in the surface around it: its plane is its
 // neighbour's carried on). A daylight sky's colour (kMinMeanGrey) without
 // an accepted plane decides where the outline alone cannot.
-bool HasEvidence(const SegmentPlane& plane, const SegmentStats& segment) {
+bool HasEvidence(const core::PassParams& params, const SegmentPlane& plane,
+                 const SegmentStats& segment) {
   const bool surrounded =
       plane.accepted && segment.outline_on_plane > kMaxSurroundedShare * segment.outline;
   if (surrounded) return false;
@@ -230,7 +292,9 @@ bool HasEvidence(const SegmentPlane& plane, const SegmentStats& segment) {
   const bool sky_coloured =
       segment.grey >= kMinMeanGrey * n && segment.blue_over_red >= kMinBlueOverRed * n;
   if (sky_coloured && !plane.accepted) return false;
-  return segment.evidence - segment.contour >= kMinOwnEvidence;
+  const long own = segment.evidence - segment.contour;
+  if (own < kMinOwnEvidence) return false;
+  return own * (1.0 - ShareAtInfinity(params, segment.own_evidence)) >= kMinOwnEvidence;
 }
 
 // The segments of `no_evidence` that are open: touching the image border
@@ -278,8 +342,16 @@ std::vector<uint8_t> OpenRegions(const core::PassParams& params, const std::vect
 std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMap& color,
                                    const std::vector<int32_t>& labels,
                                    const std::vector<SegmentPlane>& planes,
-                                   const std::vector<float>& texture) {
+                                   const std::vector<float>& window_texture) {
   const core::PixelStateView& s = params.state;
+  // Texture that can fix a depth: the window's (`window_texture`) and not
+  // only a ramp (a soft cloud, the sky's gradient; ramp_free_texture.h).
+  const std::vector<float> ramp_free = RampFreeTexture(params.ref_image, params.ncc.window_radius);
+  std::vector<uint8_t> textured(window_texture.size());
+  for (size_t i = 0; i < textured.size(); ++i) {
+    textured[i] =
+        window_texture[i] >= core::kTexturedWindowStd && ramp_free[i] >= core::kTexturedWindowStd;
+  }
   std::vector<SegmentStats> stats(planes.size());
   for (int row = 0; row < s.height; ++row) {
     for (int col = 0; col < s.width; ++col) {
@@ -288,24 +360,31 @@ std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMa
       SegmentStats& segment = stats[labels[i]];
       ++segment.pixels;
       segment.border += col == 0 || row == 0 || col + 1 == s.width || row + 1 == s.height;
-      segment.textured += texture[i] >= core::kTexturedWindowStd;
+      segment.textured += textured[i];
       segment.grey += params.ref_image.At(col, row);
       segment.blue_over_red += color.At(row, col, 2) - color.At(row, col, 0);
     }
+  }
+  // Untextured: little texture, or texture at infinity (a cloud).
+  std::vector<std::vector<int>> textured_pixels(planes.size());
+  for (size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] > 0 && textured[i]) textured_pixels[labels[i]].push_back(static_cast<int>(i));
   }
   std::vector<uint8_t> candidate(planes.size(), 0);
   bool any = false;
   for (size_t id = 1; id < planes.size(); ++id) {
     const SegmentStats& segment = stats[id];
-    candidate[id] = segment.pixels > 0 && segment.textured <= kMaxTexturedShare * segment.pixels;
+    candidate[id] =
+        segment.pixels > 0 && (segment.textured <= kMaxTexturedShare * segment.pixels ||
+                               ShareAtInfinity(params, textured_pixels[id]) > kMaxTexturedShare);
     any = any || candidate[id];
   }
   if (!any) return {};
   CountOutlines(params, labels, planes, candidate, &stats);
-  CountEvidence(params, labels, planes, candidate, texture, &stats);
+  CountEvidence(params, labels, planes, candidate, textured, &stats);
   std::vector<uint8_t> no_evidence(planes.size(), 0);
   for (size_t id = 1; id < planes.size(); ++id) {
-    no_evidence[id] = candidate[id] && !HasEvidence(planes[id], stats[id]);
+    no_evidence[id] = candidate[id] && !HasEvidence(params, planes[id], stats[id]);
   }
   std::vector<uint8_t> sky_segment = OpenRegions(params, labels, stats, no_evidence);
   any = false;

@@ -21,7 +21,9 @@
 namespace msp {
 
 // 1 at the pixels of every segment of `labels` (ids 1..K) that is mostly
-// untextured (`texture`: core::WindowTextureStd per pixel), has no evidence
+// untextured (`window_texture`: core::WindowTextureStd per pixel; a window
+// whose content is only an intensity ramp is untextured too,
+// ramp_free_texture.h), has no evidence
 // of a depth of its own, and touches the image border or a segment that is
 // marked: its only matched edges (`params.state`'s pixels on an edge with a
 // matching, textured window) are on textured surfaces, or its plane
@@ -33,7 +35,7 @@ namespace msp {
 std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMap& color,
                                    const std::vector<int32_t>& labels,
                                    const std::vector<SegmentPlane>& planes,
-                                   const std::vector<float>& texture);
+                                   const std::vector<float>& window_texture);
 
 // Depth 0 and normal 0 in `depth` and `normal` (a map's size) where
 // `open_sky` is 1; nothing when it is empty.

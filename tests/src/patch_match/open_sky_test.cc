@@ -112,6 +112,9 @@ struct Strips {
     params.ref_image = core::ImageView{grey.data(), kWidth, kHeight, kWidth};
     params.ncc.window_radius = 2;
     params.ncc.window_step = 1;
+    params.num_src = 0;  // no views: no texture is found at infinity
+    params.depth_min = 1.0f;
+    params.depth_max = 10.0f;
     return OpenSkyPixels(params, color, labels, planes, texture);
   }
   bool Marked(const std::vector<uint8_t>& sky, int id) const {
@@ -279,7 +282,7 @@ TEST(OpenSky, ColourDoesNotDecide) {
     for (int id = 2; id <= 5; ++id) s.Texture(id);
     EXPECT_TRUE(s.Marked(s.Run(), 1));
     s.Set(2, &s.texture, 0.0f);
-    s.Set(2, &s.grey, 0.5f);
+    s.Set(2, &s.grey, c[1] > 0.5f ? 0.3f : 0.7f);  // a crease of 0.2 grey or more
     s.Edge(Strips::kStrip);
     s.HoldTilted(2);
     EXPECT_TRUE(s.Untouched(s.Run(), 1));
@@ -301,6 +304,23 @@ TEST(OpenSky, SkyColourHelpsWhereTheOutlineIsUntextured) {
   EXPECT_TRUE(s.Marked(s.Run(), 1));  // sky blue, no plane: sky
   s.planes[1] = SurroundingPlane();
   EXPECT_TRUE(s.Untouched(s.Run(), 1));  // sky blue with a plane of its own
+}
+
+// A soft gradient (a cloud's edge, the sky darkening overhead) has texture
+// by its windows' standard deviation and edges by its central differences,
+// but its windows hold a ramp, which matches at every depth: no texture of
+// its own, no evidence.
+TEST(OpenSky, ASoftGradientIsNoTexture) {
+  Strips s;
+  for (size_t i = 0; i < s.labels.size(); ++i) {
+    if (s.labels[i] > 2) continue;
+    s.grey[i] = 0.3f + 0.02f * static_cast<float>(i % Strips::kWidth);  // 0.04 per 2 px
+    s.texture[i] = kTextured;
+  }
+  for (int id = 3; id <= 5; ++id) s.Texture(id);
+  const std::vector<uint8_t> sky = s.Run();
+  EXPECT_TRUE(s.Marked(sky, 1));
+  EXPECT_TRUE(s.Marked(sky, 2));
 }
 
 TEST(OpenSky, NothingMarkedGivesAnEmptyMask) {

@@ -245,9 +245,10 @@ void DefineMspStereoCommonOptions(MspStereoOptions* m, OptionVisitor* t) {
                  "neighbour with the same plane ends (a window's outline against the sky, a "
                  "roofline); false = every inlier counts.");
   MSP_ADD_OPTION(t, *m, open_sky,
-                 "Leave empty the sky-coloured (bright and blue, or white-out), mostly untextured "
-                 "segments that touch the image border and have no plane of their own (the sky, "
-                 "docs/method.md section 2.11); needs segment_planes.");
+                 "Leave empty the mostly untextured segments open to the image border that have "
+                 "no evidence of a depth of their own: no matched edges but the contours of "
+                 "textured surfaces, or only their surroundings' plane (the sky, whatever its "
+                 "colour; docs/method.md section 2.11); needs segment_planes.");
   MSP_ADD_OPTION(t, *m, normals_from_depth,
                  "Write each pixel's normal as the plane fitted to the 3D points of the pixels "
                  "around it on the same surface, instead of its plane's normal, which scatters on "

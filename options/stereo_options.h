@@ -123,7 +123,7 @@ struct MspStereoOptions {
   // A segment's plane counts only the support that is its own: not the border where a neighbour
   // with the same plane ends (a window's outline, a roofline) (docs/method.md section 2.10).
   bool segment_plane_own_support = true;
-  // Sky-coloured, untextured segments open to the image border with no plane of their own are
+  // Untextured segments open to the image border with no evidence of a depth of their own are
   // left empty: the sky (docs/method.md section 2.11). Needs segment_planes.
   bool open_sky = true;
   // Normals of the final maps from the plane fitted to the depths around each pixel, instead of

@@ -265,10 +265,17 @@ void DefineMspStereoCommonOptions(MspStereoOptions* m, OptionVisitor* t) {
                  "it and inside its image, for frames with few tracks of their own (real RGB-D or "
                  "video frames; docs/method.md section 2.1); false = its own observations only, as "
                  "COLMAP.");
-  MSP_ADD_OPTION(t, *m, filter_textureless_by_geometry,
-                 "With geometric consistency, the final filter counts a weakly textured pixel's "
-                 "sources by triangulation angle and reprojection alone: its NCC is noise. false "
-                 "= the NCC test for every pixel, as COLMAP.");
+  MSP_ADD_OPTION(
+      t, *m, filter_textureless_by_geometry,
+      "With geometric consistency, the final filter counts a weakly textured pixel's "
+      "sources by triangulation angle and depth agreement alone: its NCC is noise. false "
+      "= the NCC test for every pixel, as COLMAP.");
+  MSP_ADD_OPTION(t, *m, filter_max_depth_error,
+                 "With geometric consistency, the final filter counts a source when the depth its "
+                 "map holds where the pixel's point projects is within this share of the point's "
+                 "depth there (the depth error the agreement bounds, as COLMAP's fusion judges "
+                 "it; docs/method.md section 2.9). 0 = COLMAP's test: the reprojection error "
+                 "in pixels against filter_geom_consistency_max_cost.");
   MSP_ADD_OPTION(t, *m, equidistribution,
                  "Adaptive equidistribution (eq. 7): where a depth edge or the border closes one "
                  "of an unreliable pixel's 8 anchor sectors, re-cut the sectors so that each "

@@ -128,16 +128,19 @@ struct MspStereoOptions {
   bool open_sky = true;
   // Normals of the final maps from the plane fitted to the depths around each pixel, instead of
   // the sweeps' normals, which scatter on weak texture (docs/method.md section 2.9).
-  bool normals_from_depth = false;
+  bool normals_from_depth = true;
   // In geometric passes, planes of triangles between the pixels the other views confirm, inside
   // one colour segment, offered to the unconfirmed pixels within (docs/method.md section 2.12).
-  bool planar_prior = false;
+  bool planar_prior = true;
   // Depth range of a reference image from the sparse points it or any of its sources observes
   // that lie in front of it and inside its image (COLMAP's percentile rule on more points);
   // false = its own observations only, as COLMAP.
   bool depth_range_from_sources = false;
   // The final filter judges a weakly textured pixel by geometric agreement alone (no NCC test).
   bool filter_textureless_by_geometry = true;
+  // The final filter's geometric test: a source agrees when its depth map holds the pixel's point
+  // within this relative depth; 0 = COLMAP's reprojection error in pixels.
+  double filter_max_depth_error = 0.01;
   // Adaptive equidistribution (eq. 7, docs/method.md section 5): re-cut each unreliable pixel's
   // 8 anchor sectors so that each faces about as many reliable pixels; false = fixed 45-degree
   // sectors ("w/o Eqd.").

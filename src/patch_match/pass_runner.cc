@@ -21,8 +21,8 @@
 #include "deformable/deformable_sweeps.h"
 #include "engine/pass_schedule.h"
 #include "engine/sweep_engine.h"
-#include "patch_match/image_pyramid.h"
 #include "patch_match/depth_normals.h"
+#include "patch_match/image_pyramid.h"
 #include "patch_match/open_sky.h"
 #include "patch_match/planar_prior.h"
 #include "patch_match/problem_level.h"
@@ -531,6 +531,7 @@ class PassRunner {
     filter.min_num_consistent = std::min(pm_.filter_min_num_consistent, params.num_src);
     filter.geom_max_error = static_cast<float>(pm_.filter_geom_consistency_max_cost);
     filter.textureless_by_geometry = msp_.filter_textureless_by_geometry ? 1 : 0;
+    filter.max_depth_error = static_cast<float>(msp_.filter_max_depth_error);
     return filter;
   }
 
@@ -570,8 +571,8 @@ class PassRunner {
                 pass.map_previews ? &stages : nullptr);
     ClearOpenSky(open_sky, &depth, &normal);
     if (msp_.normals_from_depth) {
-      NormalsFromDepth(params.ref_camera, depth,
-                       DepthNormalRadius(depth.width, depth.height), threads_, &normal);
+      NormalsFromDepth(params.ref_camera, depth, DepthNormalRadius(depth.width, depth.height),
+                       threads_, &normal);
     }
     // Pictures before maps: a run stopped between them redoes the view, so
     // every view with final maps has its pictures.

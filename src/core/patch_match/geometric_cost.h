@@ -47,6 +47,25 @@ MSP_HD float ReprojectionError(const Camera& ref, const Camera& src, const Image
   return error < max_error ? error : max_error;
 }
 
+// Relative disagreement between the depth that the point at `depth` on the
+// ray of reference pixel (col, row) has in the source and the source's own
+// depth where it projects, |z - z_source| / z_source: the depth error the
+// two maps' agreement bounds, the same at every baseline and resolution
+// (COLMAP's fusion judges depth so, by its max_depth_error); `max_error` when
+// the point leaves the source or the source has no depth there.
+MSP_HD float DepthDisagreement(const Camera& ref, const Camera& src, const ImageView& src_depth,
+                               int col, int row, float depth, float max_error) {
+  const Vec3 X =
+      CamToWorld(ref, BackProject(ref, static_cast<float>(col), static_cast<float>(row), depth));
+  const Vec3 Xs = WorldToCam(src, X);
+  float u, v;
+  if (!ProjectCamPoint(src, Xs, &u, &v)) return max_error;
+  float src_d = 0.0f;
+  if (!SourceDepthAt(src, src_depth, u, v, &src_d)) return max_error;
+  const float error = fabsf(Xs.z - src_d) / src_d;
+  return error < max_error ? error : max_error;
+}
+
 // ReprojectionError with the two projections composed into the maps of
 // `rel` (ComputeRelativePose(ref, src)): the same error, for the hot loops,
 // with two divisions instead of four projections' worth of arithmetic.

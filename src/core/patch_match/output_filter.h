@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/patch_match/geometric_cost.h"
 #include "core/patch_match/map_stage.h"
 #include "core/patch_match/patch_match_kernel.h"
 #include "core/patch_match/window_texture.h"
@@ -17,6 +18,9 @@ struct FilterParams {
   float min_triangulation_angle;  // radians
   int min_num_consistent;         // already clamped to the number of sources
   float geom_max_error;           // filter_geom_consistency_max_cost, pixels
+  // > 0: a source agrees when its depth map holds the pixel's point within
+  // this relative depth (DepthDisagreement), instead of the reprojection test.
+  float max_depth_error = 0.0f;
   // 1: in geometric passes a weakly textured pixel (window_texture.h), whose
   // NCC is noise, counts the views that agree geometrically, without the NCC test.
   int textureless_by_geometry = 0;
@@ -33,7 +37,7 @@ MSP_HD float TriangulationAngle(Vec3 center_a, Vec3 center_b, Vec3 X) {
 struct ViewTests {
   bool angle = false;        // triangulation angle >= min_triangulation_angle
   bool photometric = false;  // NCC >= min_ncc (or, by geometry, a source depth map exists)
-  bool geometric = false;    // reprojection error <= geom_max_error (true outside geometric passes)
+  bool geometric = false;    // the depths agree (true outside geometric passes)
   MSP_HD bool All() const { return angle && photometric && geometric; }
 };
 
@@ -77,9 +81,15 @@ MSP_HD ViewTests TestView(const PassParams& p, const FilterParams& f, const Filt
   t.photometric = q.by_geometry ? s.depth.data != nullptr
                                 : 1.0f - PhotometricViewCost(p, q.window, j, q.plane) >= f.min_ncc;
   if (!t.photometric && !all) return t;
-  t.geometric = !(p.geometric && s.depth.data != nullptr) ||
-                ReprojectionError(p.ref_camera, s.camera, s.depth, col, row, q.h.depth,
-                                  f.geom_max_error + 1.0f) <= f.geom_max_error;
+  if (!(p.geometric && s.depth.data != nullptr)) {
+    t.geometric = true;
+  } else if (f.max_depth_error > 0.0f) {
+    t.geometric = DepthDisagreement(p.ref_camera, s.camera, s.depth, col, row, q.h.depth,
+                                    2.0f * f.max_depth_error) <= f.max_depth_error;
+  } else {
+    t.geometric = ReprojectionError(p.ref_camera, s.camera, s.depth, col, row, q.h.depth,
+                                    f.geom_max_error + 1.0f) <= f.geom_max_error;
+  }
   return t;
 }
 

@@ -340,7 +340,8 @@ TEST(PatchMatchCpu, ShardsTogetherGiveTheOneProcessMaps) {
 // A black backdrop (the plane left of x = 0 in the world, dark in every
 // view) has nothing to match: with the default black level its pixels get
 // no depth, while the lit half is recovered as without a backdrop. Matching
-// it (black level 0) gives the backdrop the lit half's plane carried over.
+// it (black level 0, open-sky rule off) gives the backdrop the lit half's
+// plane carried over.
 TEST(PatchMatchCpu, PixelsWithNothingToMatchGetNoDepth) {
   std::vector<View> views = test::RenderFrontoParallelPlane(96, 72, 4, kPlaneDepth, 0.25f);
   for (View& view : views) {
@@ -357,6 +358,9 @@ TEST(PatchMatchCpu, PixelsWithNothingToMatchGetNoDepth) {
     MspStereoOptions msp = WithDeformable();
     msp.num_threads = 2;
     msp.black_level = black_level;
+    // The black level alone: the open-sky rule would also empty the backdrop
+    // (a blank segment at the border with no edge of its own).
+    msp.open_sky = false;
     MemorySink sink;
     const test::TempDir scratch;
     RunPatchMatchCpu(views, AllProblems(4), pm, msp, scratch.path(), sink);

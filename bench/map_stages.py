@@ -33,6 +33,9 @@ import tempfile
 import cv2
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from ply_stats import read_ply  # noqa: E402
+
 STAGES = ["kept", "no plane", "open sky", "filter: angle", "filter: NCC", "filter: geometric",
           "filter: several"]
 KINDS = ["all", "textured", "weak texture", "floor", "wall"]
@@ -46,18 +49,6 @@ def read_array(path):
         w, h, c = (int(v) for v in header.split(b"&")[:3])
         data = np.fromfile(f, np.float32, w * h * c)
     return data.reshape(c, h, w).transpose(1, 2, 0)
-
-
-def read_fused(path):
-    with open(path, "rb") as f:
-        header = b""
-        while not header.endswith(b"end_header\n"):
-            header += f.readline()
-        n = int([l for l in header.split(b"\n") if l.startswith(b"element vertex")][0].split()[2])
-        dtype = np.dtype([("x", "<f4"), ("y", "<f4"), ("z", "<f4"), ("nx", "<f4"), ("ny", "<f4"),
-                          ("nz", "<f4"), ("r", "u1"), ("g", "u1"), ("b", "u1")])
-        data = np.frombuffer(f.read(n * dtype.itemsize), dtype=dtype, count=n)
-    return np.stack([data["x"], data["y"], data["z"]], 1).astype(np.float64)
 
 
 def qvec_to_rotation(q):
@@ -131,7 +122,7 @@ def main():
     ws = args.workspace
     gt_dir = os.path.join(ws, "ground_truth")
     names = [l.strip() for l in open(os.path.join(gt_dir, "images.txt")) if l.strip()]
-    points = read_fused(args.fused) if args.fused else None
+    points = read_ply(args.fused)[0] if args.fused else None
     cameras = read_cameras(ws) if args.fused else None
     map_type = "geometric"
     # totals[kind][stage] = [pixels, right]

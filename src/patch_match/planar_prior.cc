@@ -7,8 +7,8 @@
 
 #include "base/parallel_for.h"
 #include "core/math/plane.h"
-#include "core/patch_match/segment_plane.h"
 #include "core/patch_match/window_texture.h"
+#include "patch_match/segment_planes.h"
 
 namespace msp {
 namespace {
@@ -18,10 +18,6 @@ namespace {
 // two textured objects holds several triangles.
 constexpr int kCellsAcross = 60;
 constexpr int kMinCell = 4;
-// A weakly textured pixel takes its triangle's plane unless that costs this
-// much more than its own (the segment planes' margin: costs of noise-level
-// windows differ by about this much); a textured one only when it is cheaper.
-constexpr float kTexturelessMargin = 0.1f;
 // A plane seen at a grazing angle (|cos| below this between its normal and
 // the ray through the triangle's centre) is a triangle across a depth edge.
 constexpr float kMinViewCos = 0.1f;
@@ -159,12 +155,8 @@ PlanarPriorReport OfferPriorPlanes(const core::PassParams& params,
       if (owner[i] < 0 || evidence[i]) continue;
       ++offered[row];
       const PriorTriangle& tri = triangles[owner[i]];
-      const core::PlaneHypothesis candidate =
-          core::HypothesisOnPlane(params.ref_camera, col, row, tri.normal, tri.point);
-      const float before = s.depth[i];
-      const float margin = core::IsWeaklyTextured(params, col, row) ? kTexturelessMargin : 0.0f;
-      core::OfferSegmentPlane(params, col, row, candidate, margin);
-      taken[row] += s.depth[i] != before ? 1 : 0;
+      taken[row] += OfferPlane(params, col, row, tri.normal, tri.point,
+                               core::IsWeaklyTextured(params, col, row));
     }
   });
   for (int row = 0; row < s.height; ++row) {

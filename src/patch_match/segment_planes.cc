@@ -320,6 +320,15 @@ void ConfirmSegmentPlanes(const core::PassParams& params, const std::vector<int3
   }
 }
 
+bool OfferPlane(const core::PassParams& params, int col, int row, core::Vec3 normal,
+                core::Vec3 point, bool weakly_textured) {
+  const core::PlaneHypothesis candidate =
+      core::HypothesisOnPlane(params.ref_camera, col, row, normal, point);
+  const float before = params.state.depth[params.state.Index(col, row)];
+  core::OfferSegmentPlane(params, col, row, candidate, weakly_textured ? kTexturelessMargin : 0.0f);
+  return params.state.depth[params.state.Index(col, row)] != before;
+}
+
 SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
                                        const std::vector<int32_t>& labels, int num_threads,
                                        const SegmentPlaneRules& rules, const DenseMap* color,
@@ -359,12 +368,8 @@ SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
       const SegmentPlane& plane = planes[labels[i]];
       if (!plane.accepted) continue;
       ++offered[row];
-      const core::PlaneHypothesis candidate =
-          core::HypothesisOnPlane(params.ref_camera, col, row, plane.normal, plane.point);
-      const float before = s.depth[i];
-      const float margin = texture[i] < core::kTexturedWindowStd ? kTexturelessMargin : 0.0f;
-      core::OfferSegmentPlane(params, col, row, candidate, margin);
-      taken[row] += s.depth[i] != before ? 1 : 0;
+      taken[row] += OfferPlane(params, col, row, plane.normal, plane.point,
+                               texture[i] < core::kTexturedWindowStd);
     }
   });
   for (int row = 0; row < s.height; ++row) {

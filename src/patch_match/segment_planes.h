@@ -63,6 +63,14 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
                                            const std::vector<uint8_t>& reliable, uint64_t key,
                                            bool own_support = true);
 
+// Offers pixel (col, row) the plane through `point` with `normal` (camera
+// frame) under the segment planes' rule (core::OfferSegmentPlane): a weakly
+// textured pixel takes it unless it costs 0.1 more than its own plane (the
+// spread of noise-level costs), a textured one only when it is cheaper. True
+// when the pixel took it.
+bool OfferPlane(const core::PassParams& params, int col, int row, core::Vec3 normal,
+                core::Vec3 point, bool weakly_textured);
+
 // The colour segments of segment planes: `color` (the reference image at the
 // pass's level, RGB planes) cut by `segmenter`, ids 1..K. The same for every
 // pass of a round, so the runner keeps them with the image's state.

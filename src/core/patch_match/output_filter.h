@@ -93,26 +93,27 @@ MSP_HD ViewTests TestView(const PassParams& p, const FilterParams& f, const Filt
   return t;
 }
 
-// Number of source views consistent with the pixel's plane.
-MSP_HD int CountConsistentViews(const PassParams& p, const FilterParams& f, int col, int row) {
-  const FilterPixel q = PrepareFilterPixel(p, f, col, row);
+// Number of source views that pass every test for the prepared pixel `q`.
+MSP_HD int CountPassingViews(const PassParams& p, const FilterParams& f, const FilterPixel& q,
+                             int col, int row) {
   if (!q.valid) return 0;
   int count = 0;
   for (int j = 0; j < p.num_src; ++j) count += TestView(p, f, q, j, col, row, false).All() ? 1 : 0;
   return count;
 }
 
-// Number of sources whose depth maps bring the pixel's depth back within
-// geom_max_error, at a triangulation angle of at least min_triangulation_angle
-// (geometric passes; 0 otherwise): the other views' evidence for its plane,
-// without the photometric test.
+// Number of source views consistent with the pixel's plane.
+MSP_HD int CountConsistentViews(const PassParams& p, const FilterParams& f, int col, int row) {
+  return CountPassingViews(p, f, PrepareFilterPixel(p, f, col, row), col, row);
+}
+
+// Number of sources whose depth maps agree with the pixel's depth (the
+// filter's geometric test), at a triangulation angle of at least
+// min_triangulation_angle (geometric passes; 0 otherwise): the other views'
+// evidence for its plane, without the photometric test.
 MSP_HD int CountAgreeingViews(const PassParams& p, const FilterParams& f, int col, int row) {
   if (!p.geometric) return 0;
-  const FilterPixel q = PrepareFilterPixel(p, f, col, row, true);
-  if (!q.valid) return 0;
-  int count = 0;
-  for (int j = 0; j < p.num_src; ++j) count += TestView(p, f, q, j, col, row, false).All() ? 1 : 0;
-  return count;
+  return CountPassingViews(p, f, PrepareFilterPixel(p, f, col, row, true), col, row);
 }
 
 // The stage of a pixel with a plane that the filter keeps or removes: which

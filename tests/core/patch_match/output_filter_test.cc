@@ -225,6 +225,39 @@ TEST(OutputFilter, FilterStageNamesTheTestThatRemovedThePixel) {
   EXPECT_EQ(FilterStage(p, f, kCol, kRow), kStageNoPlane);
 }
 
+// The depth test: a source whose depth map holds the pixel's point within
+// max_depth_error agrees, one 2 % off does not, at any baseline; the pixel
+// test reads the same maps in pixels. CountAgreeingViews counts the same
+// views without the NCC test, and nothing in a photometric pass.
+TEST(OutputFilter, DepthTestCountsTheSourcesWithinTheRelativeError) {
+  test::PlaneScene s;
+  MakeThreeViewScene(&s);
+  PassParams& p = s.params;
+  p.num_src = 2;  // the wide views
+  const Camera& cam0 = p.src[0].camera;
+  const Camera& cam1 = p.src[1].camera;
+  const std::vector<float> near0 = test::PlaneDepthMap(cam0, 1.005f * kDepth);
+  const std::vector<float> far1 = test::PlaneDepthMap(cam1, 1.02f * kDepth);
+  p.src[0].depth = ImageView{near0.data(), cam0.width, cam0.height, cam0.width};
+  p.src[1].depth = ImageView{far1.data(), cam1.width, cam1.height, cam1.width};
+  p.geometric = 1;
+  EXPECT_NEAR(DepthDisagreement(p.ref_camera, cam0, p.src[0].depth, kCol, kRow, kDepth, 1.0f),
+              0.005f / 1.005f, 2e-4f);
+  EXPECT_NEAR(DepthDisagreement(p.ref_camera, cam1, p.src[1].depth, kCol, kRow, kDepth, 1.0f),
+              0.02f / 1.02f, 2e-4f);
+  FilterParams f = DefaultFilter();
+  f.max_depth_error = 0.01f;
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 1);
+  EXPECT_EQ(CountAgreeingViews(p, f, kCol, kRow), 1);
+  f.max_depth_error = 0.03f;
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 2);
+  f.min_ncc = 2.0f;  // no view passes NCC: the agreement does not ask
+  EXPECT_EQ(CountConsistentViews(p, f, kCol, kRow), 0);
+  EXPECT_EQ(CountAgreeingViews(p, f, kCol, kRow), 2);
+  p.geometric = 0;
+  EXPECT_EQ(CountAgreeingViews(p, f, kCol, kRow), 0);
+}
+
 }  // namespace
 }  // namespace core
 }  // namespace msp

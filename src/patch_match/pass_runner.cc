@@ -390,7 +390,7 @@ class PassRunner {
       Measured(pass, Step::kSegmentPlanes, [&] { RunSegmentPlanes(params, problem, &state); });
     }
     if (msp_.planar_prior && params.geometric) {
-      Measured(pass, Step::kSegmentPlanes, [&] { RunPlanarPrior(params, problem, &state); });
+      Measured(pass, Step::kPlanarPrior, [&] { RunPlanarPrior(params, problem, &state); });
     }
     if (pass.prior) Measured(pass, Step::kPrior, [&] { RunPrior(pass, problem, &state); });
     // Asked before the outputs are written: afterwards the image has them.

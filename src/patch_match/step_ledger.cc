@@ -7,8 +7,9 @@ namespace msp {
 namespace {
 
 const char* StepName(int step) {
-  constexpr const char* kNames[kNumSteps] = {
-      "start (scores)", "sweeps", "local refine", "segment planes", "prior", "outputs (filter)"};
+  constexpr const char* kNames[kNumSteps] = {"start (scores)",  "sweeps",       "local refine",
+                                             "segment planes",  "planar prior", "prior",
+                                             "outputs (filter)"};
   return kNames[step];
 }
 

@@ -33,10 +33,11 @@ enum class Step {
   kSweeps,         // red-black iterations (checkerboard or deformable step)
   kLocalRefine,    // median filter, local disparity sweep (+ classification)
   kSegmentPlanes,  // segments offer their planes
+  kPlanarPrior,    // triangles of confirmed pixels offer their planes
   kPrior,          // the segmentation prior
   kOutputs,        // output filter and writing the maps
 };
-constexpr int kNumSteps = 6;
+constexpr int kNumSteps = 7;
 
 class StepLedger {
  public:

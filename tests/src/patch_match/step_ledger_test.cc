@@ -24,16 +24,16 @@ TEST(StepLedgerTest, SharesOfTheRunPerRoundAndStep) {
   ledger.Add(1, Step::kSweeps, 2.0, EvaluationCounts{});
   ledger.Add(1, Step::kLocalRefine, 1.0, EvaluationCounts{});
   const std::vector<std::string> lines = Lines(ledger.Format());
-  // Title, header, then per round 6 steps + 3 phase rows of the sweeps.
-  ASSERT_EQ(lines.size(), 2u + 2u * 9u);
+  // Title, header, then per round 7 steps + 3 phase rows of the sweeps.
+  ASSERT_EQ(lines.size(), 2u + 2u * 10u);
   EXPECT_NE(lines[3].find("80x60"), std::string::npos);
   EXPECT_NE(lines[3].find("sweeps"), std::string::npos);
   EXPECT_NE(lines[3].find("25.0%"), std::string::npos);
   EXPECT_NE(lines[4].find("propagation"), std::string::npos);
-  EXPECT_NE(lines[12].find("160x120"), std::string::npos);
-  EXPECT_NE(lines[12].find("50.0%"), std::string::npos);
-  EXPECT_NE(lines[16].find("local refine"), std::string::npos);
-  EXPECT_NE(lines[16].find("25.0%"), std::string::npos);
+  EXPECT_NE(lines[13].find("160x120"), std::string::npos);
+  EXPECT_NE(lines[13].find("50.0%"), std::string::npos);
+  EXPECT_NE(lines[17].find("local refine"), std::string::npos);
+  EXPECT_NE(lines[17].find("25.0%"), std::string::npos);
 }
 
 TEST(StepLedgerTest, CountsSubtractPerPhase) {

@@ -29,16 +29,6 @@ Material Plain(const Eigen::Vector3d& albedo, double variation) {
   return m;
 }
 
-Material Textured(Texture texture, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
-                  double scale) {
-  Material m;
-  m.texture = texture;
-  m.albedo1 = a1;
-  m.albedo2 = a2;
-  m.scale = scale;
-  return m;
-}
-
 // Whether `p`, on face `face` of a room, lies in the room's window.
 bool InOpening(const Shape& room, int face, const Eigen::Vector3d& p) {
   if (face != room.opening_face) return false;
@@ -50,6 +40,18 @@ bool InOpening(const Shape& room, int face, const Eigen::Vector3d& p) {
   return true;
 }
 
+}  // namespace
+
+Material Textured(Texture texture, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
+                  double scale) {
+  Material m;
+  m.texture = texture;
+  m.albedo1 = a1;
+  m.albedo2 = a2;
+  m.scale = scale;
+  return m;
+}
+
 Shape Box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, int material) {
   Shape s;
   s.type = ShapeType::kBox;
@@ -58,8 +60,6 @@ Shape Box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, int material) {
   s.material = material;
   return s;
 }
-
-}  // namespace
 
 Eigen::Vector3d RoomSize() { return Eigen::Vector3d(5.0, 5.0, 2.6); }
 

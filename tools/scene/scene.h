@@ -109,6 +109,13 @@ class Scene {
   Eigen::Vector3d SkyRadiance(const Eigen::Vector3d& dir) const;
 };
 
+// A material of `texture` between albedos a1 and a2 at feature size `scale`.
+Material Textured(Texture texture, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
+                  double scale);
+
+// An axis-aligned box [lo, hi] seen from outside, of material `material`.
+Shape Box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, int material);
+
 // Room of kRoomSize with the textured and the camouflaged objects; with
 // `sky_window`, a window in the y = 0 wall through which every view sees open
 // sky (pixels whose ground truth is empty: nothing is there to reconstruct).

@@ -6,25 +6,6 @@ namespace {
 
 enum MaterialId : int { kRoad = 0, kBrick, kPanels, kTower, kTrunk, kLeaves, kNumMaterials };
 
-Material Textured(Texture texture, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
-                  double scale) {
-  Material m;
-  m.texture = texture;
-  m.albedo1 = a1;
-  m.albedo2 = a2;
-  m.scale = scale;
-  return m;
-}
-
-Shape Box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, int material) {
-  Shape s;
-  s.type = ShapeType::kBox;
-  s.lo = lo;
-  s.hi = hi;
-  s.material = material;
-  return s;
-}
-
 }  // namespace
 
 Scene MakeStreetScene(SkyKind sky) {

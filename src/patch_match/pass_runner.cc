@@ -437,13 +437,20 @@ class PassRunner {
          report.classify_seconds, report.sweeps.anchor_seconds, report.sweeps.sweep_seconds);
   }
 
+  // The colour segments of the image at this round (SegmentPlaneLabels),
+  // made once per round and kept with its state for the segment planes and
+  // the planar prior.
+  void MakeSegments(const Problem& problem, PixelState* state) {
+    if (state->segments.empty()) {
+      state->segments = SegmentPlaneLabels(level_->color.at(problem.ref), segmenter_);
+    }
+  }
+
   // Segment planes of one image after a pass (docs/method.md section 2.10),
   // then how many segments had a plane and how many pixels took theirs.
   void RunSegmentPlanes(const core::PassParams& params, const Problem& problem, PixelState* state) {
     const auto t0 = std::chrono::steady_clock::now();
-    if (state->segments.empty()) {
-      state->segments = SegmentPlaneLabels(level_->color.at(problem.ref), segmenter_);
-    }
+    MakeSegments(problem, state);
     SegmentPlaneRules rules;
     rules.own_support = msp_.segment_plane_own_support;
     rules.confirm = msp_.segment_plane_confirmation;
@@ -539,9 +546,7 @@ class PassRunner {
   // 2.12), bounded by the segment planes' colour segments.
   void RunPlanarPrior(const core::PassParams& params, const Problem& problem, PixelState* state) {
     const auto t0 = std::chrono::steady_clock::now();
-    if (state->segments.empty()) {
-      state->segments = SegmentPlaneLabels(level_->color.at(problem.ref), segmenter_);
-    }
+    MakeSegments(problem, state);
     const PlanarPriorReport r =
         ApplyPlanarPrior(params, OutputFilter(params), state->segments, threads_);
     const double pixels = params.state.width * params.state.height;

@@ -104,20 +104,22 @@ void ExtractMaps(const core::PassParams& params, const core::FilterParams* filte
     const int i = s.Index(col, row);
     const core::PlaneHypothesis h = s.Get(i);
     const bool has_plane = h.depth > 0.0f && std::isfinite(h.depth);
+    bool kept = has_plane;
     if (stages != nullptr) {
-      // The depth before the filter beside the stage, so that the right
-      // depth the filter removes can be counted against the ground truth.
-      stages->At(row, col, 0) =
-          static_cast<float>(!has_plane          ? core::kStageNoPlane
-                             : filter != nullptr ? core::FilterStage(params, *filter, col, row)
-                                                 : core::kStageKept);
+      // FilterStage runs every test of every view, and says kept exactly
+      // when the filter's count would. The depth before the filter goes
+      // beside the stage, so that the right depth the filter removes can be
+      // counted against the ground truth.
+      const int stage = !has_plane          ? core::kStageNoPlane
+                        : filter != nullptr ? core::FilterStage(params, *filter, col, row)
+                                            : core::kStageKept;
+      stages->At(row, col, 0) = static_cast<float>(stage);
       stages->At(row, col, 1) = has_plane ? h.depth : 0.0f;
+      kept = stage == core::kStageKept;
+    } else if (has_plane && filter != nullptr) {
+      kept = core::CountConsistentViews(params, *filter, col, row) >= filter->min_num_consistent;
     }
-    if (!has_plane) return;
-    if (filter != nullptr &&
-        core::CountConsistentViews(params, *filter, col, row) < filter->min_num_consistent) {
-      return;
-    }
+    if (!kept) return;
     const core::Vec3 n = core::Normalized(core::FaceCamera(params.ref_camera, col, row, h.normal));
     if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) return;
     depth->At(row, col) = h.depth;

@@ -276,6 +276,10 @@ void DefineMspStereoCommonOptions(MspStereoOptions* m, OptionVisitor* t) {
                  "depth there (the depth error the agreement bounds, as COLMAP's fusion judges "
                  "it; docs/method.md section 2.9). 0 = COLMAP's test: the reprojection error "
                  "in pixels against filter_geom_consistency_max_cost.");
+  MSP_ADD_OPTION(t, *m, geom_consistency_depth_error,
+                 "Geometric passes measure a source's disagreement with a pixel's point in depth "
+                 "instead of reprojected pixels: this share of the depth costs what one pixel "
+                 "does (docs/method.md section 2.7). 0 = COLMAP's reprojection error in pixels.");
   MSP_ADD_OPTION(t, *m, equidistribution,
                  "Adaptive equidistribution (eq. 7): where a depth edge or the border closes one "
                  "of an unreliable pixel's 8 anchor sectors, re-cut the sectors so that each "

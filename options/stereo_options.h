@@ -141,6 +141,9 @@ struct MspStereoOptions {
   // The final filter's geometric test: a source agrees when its depth map holds the pixel's point
   // within this relative depth; 0 = COLMAP's reprojection error in pixels.
   double filter_max_depth_error = 0.01;
+  // Geometric passes measure a source's disagreement in depth: this share of the depth costs what
+  // one pixel of reprojection error does; 0 = COLMAP's reprojection error in pixels.
+  double geom_consistency_depth_error = 0.01;
   // Adaptive equidistribution (eq. 7, docs/method.md section 5): re-cut each unreliable pixel's
   // 8 anchor sectors so that each faces about as many reliable pixels; false = fixed 45-degree
   // sectors ("w/o Eqd.").

@@ -18,9 +18,10 @@ namespace {
 // a blank wall), the matched outline cannot tell a crease from a contour;
 // there the colour helps: a segment bright and blue as a daylight sky (the
 // bundled scene's sky: grey 0.89, blue above red by 0.12 of full scale; its
-// walls at most 0.78) without an accepted plane of its own is sky. White
-// walls are bright too, but not blue under room light (office-rgbd: blue
-// below red by 0.04-0.34), and a white-out is no sky colour: a white wall
+// walls at most 0.78) without an accepted plane of its own, or whose plane
+// is the surrounding surface's (kMaxSurroundedShare), is sky. White walls
+// are bright too, but not blue under room light (office-rgbd: blue below
+// red by 0.04-0.34), and a white-out is no sky colour: a white wall
 // reaching the top border is as bright.
 constexpr double kMinMeanGrey = 0.8;
 constexpr double kMinBlueOverRed = 0.02;
@@ -30,14 +31,17 @@ constexpr double kMaxTexturedShare = 0.5;
 // Open to the border: this many of its pixels lie on the image's outermost
 // rows and columns (a corner pixel is not an opening).
 constexpr int kMinBorderPixels = 3;
-// Evidence of its own: an accepted plane that is not the plane the pixels
-// around the segment hold. The sky in a window keeps a few matched pixels of
-// its own where the wall around it is cut into thin segments whose fitted
-// planes are not the wall's, and so an accepted plane; but that plane is the
-// wall's, which the pixels all along its outline hold. A pixel outside the
-// outline holds the segment's plane when its normal is within 10 degrees and
-// its depth within 2 % of the plane's there; more than this share of them
-// do: the segment is a hole in that surface, not a surface.
+// A hole in the surface around it: the sky in a window keeps a few matched
+// pixels of its own where the wall around it is cut into thin segments whose
+// fitted planes are not the wall's, and so an accepted plane; but that plane
+// is the wall's, which the pixels all along its outline hold. A pixel
+// outside the outline holds the segment's plane when its normal is within 10
+// degrees and its depth within 2 % of the plane's there; more than this
+// share of them do. Alone this says nothing: a door in a wall, a poster, a
+// patch of carpet cut from the rest of the floor by the segmenter are held
+// by their neighbours as well (office-rgbd: 51-85 % of their outlines), and
+// a window to a blank sky looks exactly like a blank panel in the wall; with
+// a daylight sky's colour it decides (HasEvidence).
 constexpr float kSameDepth = 0.02f;
 constexpr double kMaxSurroundedShare = 0.5;
 
@@ -82,6 +86,12 @@ struct SegmentStats {
   long contour = 0;   // of those, on a textured surface (HasCrossTexture): not its evidence
   std::vector<int> own_evidence;  // the others' pixel indices
 };
+
+// Whether the segment's mean colour is a daylight sky's (kMinMeanGrey).
+bool SkyColoured(const SegmentStats& segment) {
+  const double n = static_cast<double>(segment.pixels);
+  return segment.grey >= kMinMeanGrey * n && segment.blue_over_red >= kMinBlueOverRed * n;
+}
 
 // Whether the pixel at (col, row) holds `plane`: see kSamePlaneCos, kSameDepth.
 bool HoldsPlane(const core::PassParams& params, int col, int row, const SegmentPlane& plane) {
@@ -279,19 +289,14 @@ void CountEvidence(const core::PassParams& params, const std::vector<int32_t>& l
 // Whether an untextured segment has evidence of a surface of its own: at
 // least kMinOwnEvidence evidence pixels that are not a textured surface's
 // contour (a crease or contact line between untextured surfaces counts for
-// both), and, with an accepted plane, a plane that the pixels around it do
-// not hold (else it is a hole in the surface around it: its plane is its
-// neighbour's carried on). A daylight sky's colour (kMinMeanGrey) without
-// an accepted plane decides where the outline alone cannot.
+// both) and do not match at infinity. Where the outline alone cannot tell
+// (kMinMeanGrey), a daylight sky's colour decides: without an accepted
+// plane, or with one the pixels around it hold (a hole in that surface).
 bool HasEvidence(const core::PassParams& params, const SegmentPlane& plane,
                  const SegmentStats& segment) {
   const bool surrounded =
       plane.accepted && segment.outline_on_plane > kMaxSurroundedShare * segment.outline;
-  if (surrounded) return false;
-  const double n = static_cast<double>(segment.pixels);
-  const bool sky_coloured =
-      segment.grey >= kMinMeanGrey * n && segment.blue_over_red >= kMinBlueOverRed * n;
-  if (sky_coloured && !plane.accepted) return false;
+  if (SkyColoured(segment) && (!plane.accepted || surrounded)) return false;
   const long own = segment.evidence - segment.contour;
   if (own < kMinOwnEvidence) return false;
   return own * (1.0 - ShareAtInfinity(params, segment.own_evidence)) >= kMinOwnEvidence;
@@ -380,7 +385,11 @@ std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMa
     any = any || candidate[id];
   }
   if (!any) return {};
-  CountOutlines(params, labels, planes, candidate, &stats);
+  std::vector<uint8_t> coloured(planes.size(), 0);  // only their outlines decide (HasEvidence)
+  for (size_t id = 1; id < planes.size(); ++id) {
+    coloured[id] = candidate[id] && SkyColoured(stats[id]);
+  }
+  CountOutlines(params, labels, planes, coloured, &stats);
   CountEvidence(params, labels, planes, candidate, textured, &stats);
   std::vector<uint8_t> no_evidence(planes.size(), 0);
   for (size_t id = 1; id < planes.size(); ++id) {

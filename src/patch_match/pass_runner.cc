@@ -273,6 +273,7 @@ class PassRunner {
     p.geometric = geometric ? 1 : 0;
     p.geom_lambda = static_cast<float>(pm_.geom_consistency_regularizer);
     p.geom_max_error = static_cast<float>(pm_.geom_consistency_max_cost);
+    p.geom_depth_unit = static_cast<float>(msp_.geom_consistency_depth_error);
     p.num_samples = pm_.num_samples;
     p.perturb_depth = kPerturbDepth;
     p.perturb_normal = kPerturbNormalDegrees * kDegreesToRadians;

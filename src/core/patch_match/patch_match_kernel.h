@@ -73,6 +73,8 @@ struct PassParams {
   int geometric;         // 1: add the geometric consistency term
   float geom_lambda;     // weight of the reprojection error
   float geom_max_error;  // pixels; the error is clamped here
+  // > 0: the error is the depth disagreement in these units (geometric_cost.h)
+  float geom_depth_unit = 0.0f;
   int num_samples;       // Monte-Carlo view draws
   float perturb_depth;   // relative depth perturbation of refinement
   float perturb_normal;  // radians
@@ -135,8 +137,8 @@ MSP_HD PreparedPlane PreparePlane(const PassParams& p, int col, int row, const P
 MSP_HD float GeometricTerm(const PassParams& p, int j, int col, int row, float depth) {
   const SourceView& s = p.src[j];
   if (!p.geometric || s.depth.data == nullptr) return 0.0f;
-  return p.geom_lambda *
-         ComposedReprojectionError(s.rel, s.camera, s.depth, col, row, depth, p.geom_max_error);
+  return p.geom_lambda * ComposedReprojectionError(s.rel, s.camera, s.depth, col, row, depth,
+                                                   p.geom_max_error, p.geom_depth_unit);
 }
 
 // The photometric cost (1 - NCC) of a prepared hypothesis at the centre of
@@ -270,9 +272,9 @@ MSP_HD void CandidateGeometricTerms(const PassParams& p, int col, int row,
       const SourceView& s = p.src[j];
       alignas(32) float error[kWindowLanes] = {};
       if (s.depth.data != nullptr) {
-        _mm256_store_ps(error,
-                        ComposedReprojectionErrorLanes(s.rel, s.camera, s.depth, col, row,
-                                                       _mm256_load_ps(depth), p.geom_max_error));
+        _mm256_store_ps(error, ComposedReprojectionErrorLanes(s.rel, s.camera, s.depth, col, row,
+                                                              _mm256_load_ps(depth),
+                                                              p.geom_max_error, p.geom_depth_unit));
       }
       for (int k = 0; k < num; ++k) geometric[k][j] = p.geom_lambda * error[k];
     }

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "core/math/homography.h"
@@ -70,6 +71,58 @@ TEST(GeometricCost, ComposedMapsGiveTheSameError) {
   EXPECT_GT(small, 50);
 }
 
+// In depth units the composed error is the depth disagreement divided by
+// the unit, clamped: what the output filter's depth test measures.
+TEST(GeometricCost, DepthUnitsGiveTheDepthDisagreement) {
+  const Camera ref = ReferenceCamera(), src = SourceCamera();
+  const RelativePose rel = ComputeRelativePose(ref, src);
+  const std::vector<float> depth = test::PlaneDepthMap(src, kPlaneZ);
+  const ImageView view{depth.data(), src.width, src.height, src.width};
+  int clamped = 0, small = 0;
+  for (int row = 3; row < ref.height; row += 17) {
+    for (int col = 1; col < ref.width; col += 13) {
+      for (float d : {2.0f, 2.95f, 3.0f, 3.03f, 3.4f, 40.0f}) {
+        const float expected =
+            std::min(DepthDisagreement(ref, src, view, col, row, d, 100.0f) / 0.01f, 3.0f);
+        const float composed = ComposedReprojectionError(rel, src, view, col, row, d, 3.0f, 0.01f);
+        ASSERT_NEAR(composed, expected, 2e-2f) << col << "," << row << " depth " << d;
+        clamped += expected == 3.0f;
+        small += expected < 0.5f;
+      }
+    }
+  }
+  EXPECT_GT(clamped, 20);  // both outcomes were exercised
+  EXPECT_GT(small, 20);
+}
+
+// Why the geometric passes may measure depth: 2 % of depth error is worth
+// 2 (pixels' worth) whatever the baseline, while the reprojection error of the
+// same depth error shrinks with the baseline (a source ten times nearer the
+// reference gives a tenth of the pixels), so short video baselines hardly
+// pull the views' depths together.
+TEST(GeometricCost, DepthUnitsDoNotShrinkWithTheBaseline) {
+  const Camera ref = ReferenceCamera();
+  const Camera wide =
+      test::SkewedIntrinsicsCamera(200, 150, 170.0f, test::Identity(), Vec3{0.4f, 0.0f, 0.0f});
+  const Camera near =
+      test::SkewedIntrinsicsCamera(200, 150, 170.0f, test::Identity(), Vec3{0.04f, 0.0f, 0.0f});
+  float pixels[2], depth_units[2];
+  int k = 0;
+  for (const Camera& src : {wide, near}) {
+    const RelativePose rel = ComputeRelativePose(ref, src);
+    const std::vector<float> depth = test::PlaneDepthMap(src, kPlaneZ);
+    const ImageView view{depth.data(), src.width, src.height, src.width};
+    pixels[k] = ComposedReprojectionError(rel, src, view, 100, 75, 1.02f * kPlaneZ, 100.0f);
+    depth_units[k] =
+        ComposedReprojectionError(rel, src, view, 100, 75, 1.02f * kPlaneZ, 100.0f, 0.01f);
+    ++k;
+  }
+  EXPECT_NEAR(depth_units[0], 2.0f, 0.1f);
+  EXPECT_NEAR(depth_units[1], 2.0f, 0.1f);
+  EXPECT_GT(pixels[0], 0.3f);  // 2 % of a 24 px disparity
+  EXPECT_LT(pixels[1], 0.2f * pixels[0]);
+}
+
 #if defined(MSP_WINDOW_SUMS_AVX2)
 // Eight depths at once, lane by lane the error of the scalar form: on and off
 // the map, clamped, at another resolution, and in front of and behind the
@@ -87,14 +140,18 @@ TEST(GeometricCost, LanesGiveTheScalarError) {
   for (const ImageView& view : {full, coarse}) {
     for (int row = 3; row < ref.height; row += 17) {
       for (int col = 1; col < ref.width; col += 13) {
-        alignas(32) float lanes[8];
-        _mm256_store_ps(lanes, ComposedReprojectionErrorLanes(rel, src, view, col, row,
-                                                              _mm256_loadu_ps(depths), 3.0f));
-        for (int k = 0; k < 8; ++k) {
-          const float scalar = ComposedReprojectionError(rel, src, view, col, row, depths[k], 3.0f);
-          ASSERT_NEAR(lanes[k], scalar, 1e-3f) << col << "," << row << " depth " << depths[k];
-          clamped += scalar == 3.0f;
-          small += scalar < 0.5f;
+        for (float unit : {0.0f, 0.01f}) {  // pixels, then depth units
+          alignas(32) float lanes[8];
+          _mm256_store_ps(lanes,
+                          ComposedReprojectionErrorLanes(rel, src, view, col, row,
+                                                         _mm256_loadu_ps(depths), 3.0f, unit));
+          for (int k = 0; k < 8; ++k) {
+            const float scalar =
+                ComposedReprojectionError(rel, src, view, col, row, depths[k], 3.0f, unit);
+            ASSERT_NEAR(lanes[k], scalar, 1e-3f) << col << "," << row << " depth " << depths[k];
+            clamped += scalar == 3.0f;
+            small += scalar < 0.5f;
+          }
         }
       }
     }

@@ -238,17 +238,25 @@ TEST(OpenSky, SkyReachesAcrossItsSegments) {
   EXPECT_TRUE(s.Untouched(sky, 3));
 }
 
-// An accepted plane that the pixels all around the segment hold (the sky in
-// a window, given the wall's plane) is no evidence of a surface of its own,
-// even where the window's outline is matched.
-TEST(OpenSky, APlaneThePixelsAroundHoldIsNoEvidence) {
+// An accepted plane that the pixels all around the segment hold is no
+// evidence either way: a door in a wall, a poster or a patch of carpet cut
+// from the floor is held by its neighbours as well as the sky in a window
+// given the wall's plane is. Its matched outline keeps it a surface, unless
+// it has a daylight sky's colour; and a plane of its own is a surface.
+TEST(OpenSky, AHoleInASurfaceIsSkyOnlyInASkysColour) {
   Strips s;
   s.Set(2, &s.grey, 0.7f);
   s.Edge(Strips::kStrip);
   for (int id = 3; id <= 5; ++id) s.Texture(id);
   s.planes[1] = SurroundingPlane();
-  EXPECT_TRUE(s.Marked(s.Run(), 1));
-  s.HoldTilted(2);  // the outline no longer holds it: a crease
+  EXPECT_TRUE(s.Untouched(s.Run(), 1));  // white: a panel in the wall
+  s.SetColor(1, 0.3f, 0.35f, 0.6f);
+  s.Set(1, &s.grey, 0.4f);
+  EXPECT_TRUE(s.Untouched(s.Run(), 1));  // a dark blue carpet
+  s.SetColor(1, 0.85f, 0.9f, 0.95f);
+  s.Set(1, &s.grey, 0.9f);
+  EXPECT_TRUE(s.Marked(s.Run(), 1));  // bright and blue: a window to the sky
+  s.HoldTilted(2);                    // the outline no longer holds it: a crease
   EXPECT_TRUE(s.Untouched(s.Run(), 1));
 }
 

@@ -17,13 +17,14 @@ namespace {
 // Where the only edges are untextured surfaces' outlines (a window frame in
 // a blank wall), the matched outline cannot tell a crease from a contour;
 // there the colour helps: a segment bright and blue as a daylight sky (the
-// bundled scene's sky: grey 0.89, blue above red by 0.12 of full scale; its
-// walls at most 0.78) without an accepted plane of its own, or whose plane
-// is the surrounding surface's (kMaxSurroundedShare), is sky. White walls
-// are bright too, but not blue under room light (office-rgbd: blue below
-// red by 0.04-0.34), and a white-out is no sky colour: a white wall
-// reaching the top border is as bright.
-constexpr double kMinMeanGrey = 0.8;
+// bundled scene's sky: grey 0.89, blue above red by 0.12 of full scale; the
+// deeper blue of a clear sky overhead about 0.67, blue above red by 0.33)
+// without an accepted plane of its own, or whose plane is the surrounding
+// surface's (kMaxSurroundedShare), is sky. A blue carpet is as blue, but
+// dark (office-rgbd: grey 0.26-0.43); white walls are bright too, but not
+// blue under room light (blue below red by 0.04-0.34), and a white-out is
+// no sky colour: a white wall reaching the top border is as bright.
+constexpr double kMinMeanGrey = 0.6;
 constexpr double kMinBlueOverRed = 0.02;
 // Untextured: at most this share of the segment's matching windows holds
 // texture (the band along its outline does: the windows straddle the edge).

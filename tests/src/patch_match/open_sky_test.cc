@@ -245,7 +245,7 @@ TEST(OpenSky, SkyReachesAcrossItsSegments) {
 // it has a daylight sky's colour; and a plane of its own is a surface.
 TEST(OpenSky, AHoleInASurfaceIsSkyOnlyInASkysColour) {
   Strips s;
-  s.Set(2, &s.grey, 0.7f);
+  s.Set(2, &s.grey, 0.2f);  // a dark wall: every colour below differs from it
   s.Edge(Strips::kStrip);
   for (int id = 3; id <= 5; ++id) s.Texture(id);
   s.planes[1] = SurroundingPlane();
@@ -256,6 +256,9 @@ TEST(OpenSky, AHoleInASurfaceIsSkyOnlyInASkysColour) {
   s.SetColor(1, 0.85f, 0.9f, 0.95f);
   s.Set(1, &s.grey, 0.9f);
   EXPECT_TRUE(s.Marked(s.Run(), 1));  // bright and blue: a window to the sky
+  s.SetColor(1, 0.57f, 0.68f, 0.9f);
+  s.Set(1, &s.grey, 0.67f);
+  EXPECT_TRUE(s.Marked(s.Run(), 1));  // the deeper blue of a clear sky overhead
   s.HoldTilted(2);                    // the outline no longer holds it: a crease
   EXPECT_TRUE(s.Untouched(s.Run(), 1));
 }

@@ -355,7 +355,8 @@ void DefineMspStereoAdvancedOptions(MspStereoOptions* m, OptionVisitor* t) {
   MSP_ADD_OPTION(t, *m, advanced_finest_refine_radius,
                  "Disparity pixels each side of the local refinement's sweep in the finest round "
                  "when there are several rounds (1..5; the coarser rounds sweep 5): the planes "
-                 "carried up are within a coarse pixel.");
+                 "carried up are within a coarse pixel, and where the cost is flat (weak texture) "
+                 "a wider sweep lets the noise move the depth.");
   MSP_ADD_OPTION(t, *m, advanced_finest_deformable,
                  "With several rounds, the finest round also runs the deformable step (slow at "
                  "full size); false = conventional sweeps there (the coarser rounds found the "

@@ -183,8 +183,8 @@ struct MspStereoOptions {
   int advanced_geometric_passes = 3;
   int advanced_finest_geometric_passes = 3;
   // Disparity pixels each side of the local refinement's sweep in the finest round of several
-  // (1..5; the coarser rounds sweep 5).
-  int advanced_finest_refine_radius = 5;
+  // (1..5; the coarser rounds sweep 5): on a flat cost a wider sweep lets the noise move the depth.
+  int advanced_finest_refine_radius = 2;
   // Rounds whose images' larger side exceeds this many pixels run the conventional sweeps, not
   // the deformable step; 0 = no limit.
   int advanced_deformable_max_image_size = 80;

@@ -91,15 +91,16 @@ TEST(PassSchedule, TheMethodRestoresDetailInTheFinestRound) {
       "refine; segment planes\n"
       "round 2/3 (scale 1/2), pass 4 geometric (id 11): previous state; 3 x checkerboard; "
       "refine; segment planes\n";
+  // The finest round sweeps +-2 px in its local refinement.
   const std::string round3 =
       "round 3/3 (scale 1/1), pass 1 photometric (id 16): upsampled state; 1 x checkerboard on "
-      "the selected views; refine; segment planes; writes unfiltered maps\n"
+      "the selected views; refine (+-2 px); segment planes; writes unfiltered maps\n"
       "round 3/3 (scale 1/1), pass 2 geometric (id 17): previous state; 1 x checkerboard on the "
-      "selected views; refine; segment planes\n"
+      "selected views; refine (+-2 px); segment planes\n"
       "round 3/3 (scale 1/1), pass 3 geometric (id 18): previous state; 1 x checkerboard on the "
-      "selected views; refine; segment planes\n"
+      "selected views; refine (+-2 px); segment planes\n"
       "round 3/3 (scale 1/1), pass 4 geometric (id 19): previous state; 1 x checkerboard on the "
-      "selected views; refine; segment planes; writes final maps\n";
+      "selected views; refine (+-2 px); segment planes; writes final maps\n";
   EXPECT_EQ(Printed(PatchMatchStereoOptions(), WithDeformable()), round1 + round2 + round3);
 }
 

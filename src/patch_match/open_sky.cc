@@ -57,7 +57,7 @@ constexpr int kMixedPixelDepth = 2;
 constexpr float kEvidenceCost = 0.3f;
 constexpr float kEvidenceEdge = 0.03f;
 constexpr long kMinOwnEvidence = 12;
-// Mostly contours: where at least this share of the matched edges at a
+// Mostly contours: where more than this share of the matched edges at a
 // segment are textured surfaces' contours, the rest are too (the edges of a
 // texture that runs one way, stripes or a branch, read as straight edges):
 // the street's sky at 640x480 has 12-17 % of its matched edges so, a blank

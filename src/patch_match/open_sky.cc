@@ -57,12 +57,6 @@ constexpr int kMixedPixelDepth = 2;
 constexpr float kEvidenceCost = 0.3f;
 constexpr float kEvidenceEdge = 0.03f;
 constexpr long kMinOwnEvidence = 12;
-// Mostly contours: where more than this share of the matched edges at a
-// segment are textured surfaces' contours, the rest are too (the edges of a
-// texture that runs one way, stripes or a branch, read as straight edges):
-// the street's sky at 640x480 has 12-17 % of its matched edges so, a blank
-// wall's creases and contact lines 42 % and more (office-rgbd).
-constexpr double kMaxContourShare = 0.75;
 // Texture in two directions: gradients across the window's main direction
 // of at least this RMS (intensity per pixel). Camera noise of 2 grey levels
 // gives about 0.006, the scene's textures 0.03 and more.
@@ -305,7 +299,7 @@ bool HasEvidence(const core::PassParams& params, const SegmentPlane& plane,
       plane.accepted && segment.outline_on_plane > kMaxSurroundedShare * segment.outline;
   if (SkyColoured(segment) && (!plane.accepted || surrounded)) return false;
   const long own = segment.evidence - segment.contour;
-  if (own < kMinOwnEvidence || segment.contour > kMaxContourShare * segment.evidence) return false;
+  if (own < kMinOwnEvidence) return false;
   return own * (1.0 - ShareAtInfinity(params, segment.own_evidence)) >= kMinOwnEvidence;
 }
 

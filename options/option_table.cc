@@ -357,6 +357,13 @@ void DefineMspStereoAdvancedOptions(MspStereoOptions* m, OptionVisitor* t) {
                  "when there are several rounds (1..5; the coarser rounds sweep 5): the planes "
                  "carried up are within a coarse pixel, and where the cost is flat (weak texture) "
                  "a wider sweep lets the noise move the depth.");
+  MSP_ADD_OPTION(t, *m, advanced_finest_hold_weak_texture,
+                 "With several rounds, the finest round (with conventional sweeps) leaves the "
+                 "weakly textured pixels (matching "
+                 "window's standard deviation below 0.02) the planes the coarser rounds carried "
+                 "up: no sweep or local refinement moves them (at full size their cost is flat "
+                 "noise), while they are scored, propagate and are filtered as any. false = every "
+                 "pixel is swept.");
   MSP_ADD_OPTION(t, *m, advanced_finest_deformable,
                  "With several rounds, the finest round also runs the deformable step (slow at "
                  "full size); false = conventional sweeps there (the coarser rounds found the "

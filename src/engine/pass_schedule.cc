@@ -49,6 +49,10 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
   // The selections the coarser rounds settled carry up with the planes.
   pass.weighted_views_only = restoring && msp.advanced_weighted_views_only;
   pass.sweeps = deformable ? PassSweeps::kDeformable : PassSweeps::kCheckerboard;
+  // The coarser rounds chose the weakly textured pixels' planes; the
+  // conventional update would only move them (the deformable step exists
+  // for them).
+  pass.hold_weak_texture = restoring && !deformable && msp.advanced_finest_hold_weak_texture;
   // A round's first pass classifies with the thresholds after the coarser
   // round's last pass; the others take the classes of the previous refine.
   if (deformable && index == 0) pass.classify_after = coarser_passes - 1;
@@ -128,6 +132,7 @@ std::string ToString(const Pass& pass) {
   if (pass.refine_radius != core::kLocalRefineRadius) {
     s += " (+-" + std::to_string(pass.refine_radius) + " px)";
   }
+  if (pass.hold_weak_texture) s += "; weak texture held";
   if (pass.segment_planes) s += "; segment planes";
   if (pass.prior) s += "; prior";
   s += OutputName(pass.output);

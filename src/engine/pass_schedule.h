@@ -64,6 +64,8 @@ struct Pass {
   int refine_radius = core::kLocalRefineRadius;
   // Propagation scores only the views of each pixel's last selection.
   bool weighted_views_only = false;
+  // Weakly textured pixels keep their planes (patch_match/held_pixels.h).
+  bool hold_weak_texture = false;
   // kDeformable: -1 = the classes come from the previous pass's local
   // refinement; else the state is classified at the start with the
   // thresholds after this pass of a round (core::DefaultReliabilityParams).

@@ -22,6 +22,7 @@
 #include "engine/pass_schedule.h"
 #include "engine/sweep_engine.h"
 #include "patch_match/depth_normals.h"
+#include "patch_match/held_pixels.h"
 #include "patch_match/image_pyramid.h"
 #include "patch_match/open_sky.h"
 #include "patch_match/planar_prior.h"
@@ -359,6 +360,16 @@ class PassRunner {
         Logf(kLogDetail, "  %s: %.1f%% of pixels unlit (nothing to match)\n",
              views_[problem.ref].name.c_str(),
              100.0 * std::count(unlit.begin(), unlit.end(), 1) / unlit.size());
+      }
+    }
+    const std::vector<uint8_t> held =
+        pass.hold_weak_texture ? WeaklyTexturedPixels(params, threads_) : std::vector<uint8_t>();
+    if (!held.empty()) {
+      params.held = held.data();
+      if (pass.index == 0) {
+        Logf(kLogDetail, "  %s: %.1f%% of pixels weakly textured, their planes held\n",
+             views_[problem.ref].name.c_str(),
+             100.0 * std::count(held.begin(), held.end(), 1) / held.size());
       }
     }
     ledger_.AddImagePass(

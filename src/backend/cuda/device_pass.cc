@@ -25,6 +25,10 @@ DevicePass::DevicePass(const core::PassParams& host)
     unlit_ = DeviceBuffer<uint8_t>::FromHost(host.unlit, n);
     device.unlit = unlit_.data();
   }
+  if (host.held != nullptr) {
+    held_ = DeviceBuffer<uint8_t>::FromHost(host.held, n);
+    device.held = held_.data();
+  }
   params_ = DeviceBuffer<core::PassParams>::FromHost(&device, 1);
 }
 

@@ -41,6 +41,7 @@ class DevicePass {
   DeviceBuffer<float> depth_, normal_, cost_;
   DeviceBuffer<uint32_t> mask_;
   DeviceBuffer<uint8_t> unlit_;
+  DeviceBuffer<uint8_t> held_;
   DeviceBuffer<core::PassParams> params_;
 };
 

@@ -65,6 +65,7 @@ MSP_HD void LocalRefinePixelWithin(const PassParams& p, int col, int row, int ra
 }
 
 MSP_HD void LocalRefinePixel(const PassParams& p, int col, int row) {
+  if (IsHeld(p, p.state.Index(col, row))) return;
   LocalRefinePixelWithin(p, col, row, p.refine_radius);
 }
 

@@ -88,12 +88,19 @@ struct PassParams {
   // 1 at a pixel whose matching window holds nothing to match (UnlitPixels,
   // src/patch_match/unlit_pixels.h); null when no pixel is so.
   const uint8_t* unlit = nullptr;
+  // 1 at a pixel that keeps the plane it has: no sweep or local refinement
+  // moves it, while it is scored, proposes its plane and is filtered as any
+  // (the finest round's weakly textured pixels, held_pixels.h); null when none.
+  const uint8_t* held = nullptr;
   PixelStateView state;
 };
 
 // True at a pixel with nothing to match: it keeps no plane (depth 0, which
 // no neighbour propagates and the outputs leave empty), and no step scores it.
 MSP_HD bool IsUnlit(const PassParams& p, int i) { return p.unlit != nullptr && p.unlit[i] != 0u; }
+
+// True at a pixel whose plane the sweeps leave as it is (PassParams::held).
+MSP_HD bool IsHeld(const PassParams& p, int i) { return p.held != nullptr && p.held[i] != 0u; }
 
 // Pixel i without a plane: depth 0, the highest cost, no selected views.
 MSP_HD void ClearPixel(const PixelStateView& s, int i) {
@@ -464,7 +471,7 @@ MSP_HD PlaneHypothesis RefinementCandidate(const PassParams& p, int col, int row
 MSP_HD void UpdatePixel(const PassParams& p, int col, int row, int iteration) {
   const PixelStateView& s = p.state;
   const int i = s.Index(col, row);
-  if (IsUnlit(p, i)) return;
+  if (IsUnlit(p, i) || IsHeld(p, i)) return;
   MSP_EVALUATION_PHASE(kPropagationPhase);
   const uint32_t pixel = static_cast<uint32_t>(i);
   constexpr int kRows = kNumPropagationCandidates + 1;  // + the current plane

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "tests/support/plane_scene.h"
 
@@ -39,6 +41,26 @@ TEST(LocalRefine, SweepsRefineRadiusPixelsOfDisparity) {
   scene.state_depth[i] = core::DepthAtDisparityOffset(fb, scene.depth, 1.0f);
   core::LocalRefinePixel(p, col, row);
   EXPECT_NEAR(Disparity(p, scene.state_depth[i]), truth, 0.01f);
+}
+
+// A held pixel (core::PassParams::held) is left where it is by the sweep.
+TEST(LocalRefine, LeavesAHeldPixel) {
+  test::PlaneScene scene;
+  test::MakeScene(4.0f, true, &scene);
+  core::PassParams& p = scene.params;
+  const int col = p.ref_camera.width / 2, row = p.ref_camera.height / 2;
+  const int i = p.state.Index(col, row);
+  const float fb = Disparity(p, scene.depth) * scene.depth;
+  std::vector<uint8_t> held(static_cast<size_t>(p.state.width) * p.state.height, 0);
+  held[i] = 1;
+  p.held = held.data();
+  const float off = core::DepthAtDisparityOffset(fb, scene.depth, 3.0f);
+  scene.state_depth[i] = off;
+  core::LocalRefinePixel(p, col, row);
+  EXPECT_EQ(scene.state_depth[i], off);
+  p.held = nullptr;
+  core::LocalRefinePixel(p, col, row);
+  EXPECT_NEAR(scene.state_depth[i], scene.depth, 0.01f * scene.depth);
 }
 
 }  // namespace

@@ -237,8 +237,7 @@ TEST(UpdatePixel, WeightedViewsOnlyScoresTheLastSelection) {
         if (weighted_views_only) {
           EXPECT_EQ(mask, 1u) << col << "," << row;
           const PlaneHypothesis h = PlaneAt(p, col, row);
-          EXPECT_NEAR(StoredCost(p, col, row), test::ConventionalViewCost(p, 0, col, row, h),
-                      1e-5f)
+          EXPECT_NEAR(StoredCost(p, col, row), test::ConventionalViewCost(p, 0, col, row, h), 1e-5f)
               << col << "," << row;
         }
       }
@@ -289,6 +288,30 @@ TEST(UpdatePixel, UnlitPixelHoldsNoPlaneAndIsNeverUpdated) {
   // A lit neighbour still finds the true plane around it.
   UpdatePixel(p, kCol + 1, kRow, 0);
   EXPECT_NEAR(PlaneAt(p, kCol + 1, kRow).depth, kDepth, 0.01f * kDepth);
+}
+
+// A held pixel (PassParams::held) keeps the plane it has, wrong or right:
+// neither propagation nor refinement moves it, while its neighbours still
+// take the true plane, its own included.
+TEST(UpdatePixel, HeldPixelKeepsItsPlaneAndStillProposesIt) {
+  test::PlaneScene s;
+  MakeScoredScene(&s);
+  PassParams& p = s.params;
+  std::vector<uint8_t> held(static_cast<size_t>(p.state.width) * p.state.height, 0);
+  const int i = p.state.Index(kCol, kRow);
+  held[i] = 1;
+  p.held = held.data();
+  const PlaneHypothesis wrong{1.1f * kDepth, kFrontoParallel};
+  p.state.Set(i, wrong);
+  ScorePixel(p, kCol, kRow);
+  const float cost = StoredCost(p, kCol, kRow);
+  for (int iteration = 0; iteration < 3; ++iteration) UpdatePixel(p, kCol, kRow, iteration);
+  EXPECT_EQ(PlaneAt(p, kCol, kRow).depth, wrong.depth);
+  EXPECT_EQ(StoredCost(p, kCol, kRow), cost);
+  // Not held, the same pixel takes the true plane from its neighbours.
+  p.held = nullptr;
+  UpdatePixel(p, kCol, kRow, 0);
+  EXPECT_NEAR(PlaneAt(p, kCol, kRow).depth, kDepth, 0.01f * kDepth);
 }
 
 }  // namespace

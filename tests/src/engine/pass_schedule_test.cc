@@ -94,13 +94,14 @@ TEST(PassSchedule, TheMethodRestoresDetailInTheFinestRound) {
   // The finest round sweeps +-2 px in its local refinement.
   const std::string round3 =
       "round 3/3 (scale 1/1), pass 1 photometric (id 16): upsampled state; 1 x checkerboard on "
-      "the selected views; refine (+-2 px); segment planes; writes unfiltered maps\n"
+      "the selected views; refine (+-2 px); weak texture held; segment planes; writes unfiltered "
+      "maps\n"
       "round 3/3 (scale 1/1), pass 2 geometric (id 17): previous state; 1 x checkerboard on the "
-      "selected views; refine (+-2 px); segment planes\n"
+      "selected views; refine (+-2 px); weak texture held; segment planes\n"
       "round 3/3 (scale 1/1), pass 3 geometric (id 18): previous state; 1 x checkerboard on the "
-      "selected views; refine (+-2 px); segment planes\n"
+      "selected views; refine (+-2 px); weak texture held; segment planes\n"
       "round 3/3 (scale 1/1), pass 4 geometric (id 19): previous state; 1 x checkerboard on the "
-      "selected views; refine (+-2 px); segment planes; writes final maps\n";
+      "selected views; refine (+-2 px); weak texture held; segment planes; writes final maps\n";
   EXPECT_EQ(Printed(PatchMatchStereoOptions(), WithDeformable()), round1 + round2 + round3);
 }
 
@@ -124,6 +125,24 @@ TEST(PassSchedule, WeightedViewsOnlyInTheFinestRound) {
   for (const Pass& pass :
        BuildPassSchedule(PatchMatchStereoOptions(), one_round, kSceneWidth, kSceneHeight)) {
     EXPECT_FALSE(pass.weighted_views_only);
+  }
+}
+
+// The finest round of several leaves the weakly textured pixels the planes
+// carried up; one round has no planes carried up to hold.
+TEST(PassSchedule, WeakTextureHeldInTheFinestRoundOnly) {
+  for (const Pass& pass :
+       BuildPassSchedule(PatchMatchStereoOptions(), MspStereoOptions(), 640, 480)) {
+    EXPECT_EQ(pass.hold_weak_texture, pass.round == pass.num_rounds - 1) << ToString(pass);
+  }
+  for (const Pass& pass :
+       BuildPassSchedule(PatchMatchStereoOptions(), OneRound(), kSceneWidth, kSceneHeight)) {
+    EXPECT_FALSE(pass.hold_weak_texture) << ToString(pass);
+  }
+  MspStereoOptions msp;
+  msp.advanced_finest_hold_weak_texture = false;
+  for (const Pass& pass : BuildPassSchedule(PatchMatchStereoOptions(), msp, 640, 480)) {
+    EXPECT_FALSE(pass.hold_weak_texture) << ToString(pass);
   }
 }
 

@@ -363,11 +363,12 @@ class PassRunner {
       }
     }
     const std::vector<uint8_t> held =
-        pass.hold_weak_texture ? WeaklyTexturedPixels(params, threads_) : std::vector<uint8_t>();
+        pass.hold_weak_texture ? HeldPixels(params, threads_) : std::vector<uint8_t>();
     if (!held.empty()) {
       params.held = held.data();
       if (pass.index == 0) {
-        Logf(kLogDetail, "  %s: %.1f%% of pixels weakly textured, their planes held\n",
+        Logf(kLogDetail,
+             "  %s: %.1f%% of pixels held (weakly textured, on their neighbours' plane)\n",
              views_[problem.ref].name.c_str(),
              100.0 * std::count(held.begin(), held.end(), 1) / held.size());
       }

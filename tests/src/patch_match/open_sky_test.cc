@@ -35,11 +35,12 @@ SegmentPlane SurroundingPlane() { return AcceptedPlane(core::Vec3{0.0f, 0.0f, -1
 
 constexpr float kTextured = 2.0f * core::kTexturedWindowStd;
 
-// A 40x30 image cut into vertical strips of 8 columns, segments 1..5 from
-// the left; every strip reaches the top and bottom borders. Untextured and
-// without a plane unless a test says otherwise.
-struct Strips {
-  static constexpr int kWidth = 40, kHeight = 30, kStrip = 8;
+// A 40 x kRows image cut into vertical strips of 8 columns, segments 1..5
+// from the left; every strip reaches the top and bottom borders. Untextured
+// and without a plane unless a test says otherwise.
+template <int kRows>
+struct StripsOf {
+  static constexpr int kWidth = 40, kHeight = kRows, kStrip = 8;
   std::vector<float> grey = std::vector<float>(kWidth * kHeight, 0.9f);
   std::vector<int32_t> labels = std::vector<int32_t>(kWidth * kHeight, 0);
   std::vector<float> texture = std::vector<float>(kWidth * kHeight, 0.0f);
@@ -53,7 +54,7 @@ struct Strips {
   DenseMap color = DenseMap(kWidth, kHeight, 3);
   core::PassParams params;
 
-  Strips() {
+  StripsOf() {
     for (int i = 0; i < kWidth * kHeight; ++i) normal[2 * kWidth * kHeight + i] = -1.0f;
     SetColor(0, 0.9f, 0.9f, 0.9f);
     for (int row = 0; row < kHeight; ++row) {
@@ -131,6 +132,8 @@ struct Strips {
   }
 };
 
+using Strips = StripsOf<30>;
+
 // An untextured segment open to the border with no evidence of a depth is
 // sky; a segment with a matched crease, a textured one, and one closed off
 // behind a textured one are not.
@@ -157,6 +160,28 @@ TEST(OpenSky, UntexturedOpenSegmentWithoutEvidenceIsSky) {
     }
   }
   EXPECT_EQ(marked, Strips::kStrip * Strips::kHeight);
+}
+
+// In a daylight sky's colour, evidence must be a part of the outline (5 %),
+// not a few pixels along it. Strip 3 has an accepted plane of its own (the
+// strips beside it lie deeper); on its outline of 2 x 300 pixels a
+// crease-like edge of 20 rows (20 evidence pixels on its plane, enough for a
+// plane) is not evidence, one of 40 rows is. In a wall's colour the 20 rows
+// are (a door frame on a long grey wall).
+TEST(OpenSky, AFewEdgePixelsAlongASkysLongOutlineAreNoEvidence) {
+  StripsOf<300> s;
+  s.Set(3, &s.grey, 0.7f);
+  s.Set(2, &s.depth, 3.0f);
+  s.Set(4, &s.depth, 3.0f);
+  s.planes[3] = SurroundingPlane();
+  s.SetColor(3, 0.55f, 0.7f, 0.9f);
+  s.Edge(2 * s.kStrip, 0, 20);
+  EXPECT_TRUE(s.Marked(s.Run(), 3));
+  s.SetColor(3, 0.7f, 0.7f, 0.7f);
+  EXPECT_TRUE(s.Untouched(s.Run(), 3));
+  s.SetColor(3, 0.55f, 0.7f, 0.9f);
+  s.Edge(2 * s.kStrip, 0, 40);
+  EXPECT_TRUE(s.Untouched(s.Run(), 3));
 }
 
 // The region behind an occluding contour: untextured, its only matched

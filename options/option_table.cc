@@ -358,12 +358,12 @@ void DefineMspStereoAdvancedOptions(MspStereoOptions* m, OptionVisitor* t) {
                  "carried up are within a coarse pixel, and where the cost is flat (weak texture) "
                  "a wider sweep lets the noise move the depth.");
   MSP_ADD_OPTION(t, *m, advanced_finest_hold_weak_texture,
-                 "With several rounds, the finest round (with conventional sweeps) leaves the "
-                 "weakly textured pixels (matching "
-                 "window's standard deviation below 0.02) the planes the coarser rounds carried "
-                 "up: no sweep or local refinement moves them (at full size their cost is flat "
-                 "noise), while they are scored, propagate and are filtered as any. false = every "
-                 "pixel is swept.");
+                 "With several rounds, the finest round (with conventional sweeps) leaves a "
+                 "weakly textured pixel (matching window's standard deviation below 0.02) whose "
+                 "neighbours 5 px away lie on its plane within 1 % the plane the coarser rounds "
+                 "carried up: no sweep or local refinement moves it (at full size its cost is "
+                 "flat noise), while it is scored, propagates and is filtered as any; near a "
+                 "depth edge the pixels are swept. false = every pixel is swept.");
   MSP_ADD_OPTION(t, *m, advanced_finest_deformable,
                  "With several rounds, the finest round also runs the deformable step (slow at "
                  "full size); false = conventional sweeps there (the coarser rounds found the "

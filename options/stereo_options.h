@@ -185,8 +185,8 @@ struct MspStereoOptions {
   // Disparity pixels each side of the local refinement's sweep in the finest round of several
   // (1..5; the coarser rounds sweep 5): on a flat cost a wider sweep lets the noise move the depth.
   int advanced_finest_refine_radius = 2;
-  // In the finest round of several, weakly textured pixels keep the plane carried up: no sweep
-  // or local refinement moves it (their cost is flat noise at full size).
+  // In the finest round of several, weakly textured pixels whose neighbours continue their plane
+  // keep the plane carried up: no sweep or local refinement moves it (flat noise at full size).
   bool advanced_finest_hold_weak_texture = true;
   // Rounds whose images' larger side exceeds this many pixels run the conventional sweeps, not
   // the deformable step; 0 = no limit.

@@ -115,8 +115,8 @@ bool HoldsPlane(const core::PassParams& params, int col, int row, const SegmentP
   return std::fabs(depth - held.depth) <= kSameDepth * held.depth;
 }
 
-// Counts, for the segments `candidate` marks, the pixels around their
-// outline, and when their plane is accepted those of them holding it.
+// Counts, for the segments `candidate` marks whose plane is accepted, the
+// pixels around their outline and those of them holding the segment's plane.
 void CountOutlines(const core::PassParams& params, const std::vector<int32_t>& labels,
                    const std::vector<SegmentPlane>& planes, const std::vector<uint8_t>& candidate,
                    std::vector<SegmentStats>* stats) {
@@ -124,13 +124,13 @@ void CountOutlines(const core::PassParams& params, const std::vector<int32_t>& l
   for (int row = 0; row < s.height; ++row) {
     for (int col = 0; col < s.width; ++col) {
       const int id = labels[s.Index(col, row)];
-      if (id <= 0 || !candidate[id]) continue;
+      if (id <= 0 || !candidate[id] || !planes[id].accepted) continue;
       VisitNeighbours4(s.width, s.height, col, row, [&](int c, int r) {
         const int other = labels[s.Index(c, r)];
         if (other <= 0 || other == id) return false;
         SegmentStats& segment = (*stats)[id];
         ++segment.outline;
-        segment.outline_on_plane += planes[id].accepted && HoldsPlane(params, c, r, planes[id]);
+        segment.outline_on_plane += HoldsPlane(params, c, r, planes[id]);
         return false;
       });
     }
@@ -298,7 +298,8 @@ void CountEvidence(const core::PassParams& params, const std::vector<int32_t>& l
 
 // Whether an untextured segment has evidence of a surface of its own: at
 // least kMinOwnEvidence evidence pixels (in a sky's colour also
-// kMinOwnEvidenceShare of its outline) that are not a textured surface's
+// kMinOwnEvidenceShare of its outline, counted for an accepted plane: a sky
+// without one has no evidence anyway) that are not a textured surface's
 // contour (a crease or contact line between untextured surfaces counts for
 // both) and do not match at infinity. Where the outline alone cannot tell
 // (kMinMeanGrey), a daylight sky's colour decides: without an accepted
@@ -398,7 +399,13 @@ std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMa
     any = any || candidate[id];
   }
   if (!any) return {};
-  CountOutlines(params, labels, planes, candidate, &stats);
+  // Only a sky-coloured segment with an accepted plane needs its outline
+  // (HasEvidence): the others are decided without it.
+  std::vector<uint8_t> coloured(planes.size(), 0);
+  for (size_t id = 1; id < planes.size(); ++id) {
+    coloured[id] = candidate[id] && SkyColoured(stats[id]);
+  }
+  CountOutlines(params, labels, planes, coloured, &stats);
   CountEvidence(params, labels, planes, candidate, textured, &stats);
   std::vector<uint8_t> no_evidence(planes.size(), 0);
   for (size_t id = 1; id < planes.size(); ++id) {

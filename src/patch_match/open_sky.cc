@@ -308,9 +308,10 @@ bool HasEvidence(const core::PassParams& params, const SegmentPlane& plane,
                  const SegmentStats& segment) {
   const bool surrounded =
       plane.accepted && segment.outline_on_plane > kMaxSurroundedShare * segment.outline;
-  if (SkyColoured(segment) && (!plane.accepted || surrounded)) return false;
+  const bool sky_coloured = SkyColoured(segment);
+  if (sky_coloured && (!plane.accepted || surrounded)) return false;
   const long own = segment.evidence - segment.contour;
-  const double share = SkyColoured(segment) ? kMinOwnEvidenceShare : 0.0;
+  const double share = sky_coloured ? kMinOwnEvidenceShare : 0.0;
   const double needed = std::max(static_cast<double>(kMinOwnEvidence), share * segment.outline);
   if (own < needed) return false;
   return own * (1.0 - ShareAtInfinity(params, segment.own_evidence)) >= needed;

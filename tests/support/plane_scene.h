@@ -101,5 +101,13 @@ inline float ConventionalViewCost(const core::PassParams& p, int j, int col, int
   return costs[j];
 }
 
+// A per-pixel mask of the state's size (PassParams::unlit, ::held) with
+// only pixel (col, row) set.
+inline std::vector<uint8_t> OnePixelMask(const core::PassParams& p, int col, int row) {
+  std::vector<uint8_t> mask(static_cast<size_t>(p.state.width) * p.state.height, 0);
+  mask[p.state.Index(col, row)] = 1;
+  return mask;
+}
+
 }  // namespace test
 }  // namespace msp

@@ -16,17 +16,28 @@ float Disparity(const core::PassParams& p, float depth) {
   return p.ref_camera.fx * core::MeanBaseline(p, 1u) / depth;
 }
 
+// The textured plane z = 4 and its centre pixel (col, row), state index i,
+// with f b, the disparity times the depth, of the reference's sweep.
+class LocalRefine : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    test::MakeScene(4.0f, true, &scene);
+    col = scene.params.ref_camera.width / 2;
+    row = scene.params.ref_camera.height / 2;
+    i = scene.params.state.Index(col, row);
+    fb = Disparity(scene.params, scene.depth) * scene.depth;
+  }
+  test::PlaneScene scene;
+  int col = 0, row = 0, i = 0;
+  float fb = 0.0f;
+};
+
 // A pixel 3 disparity pixels off the textured plane: the default sweep
 // (+-5 px) lands on the plane; a sweep of +-1 px stays within 1 px of where
 // it started, and lands on the plane from 1 px off.
-TEST(LocalRefine, SweepsRefineRadiusPixelsOfDisparity) {
-  test::PlaneScene scene;
-  test::MakeScene(4.0f, true, &scene);
+TEST_F(LocalRefine, SweepsRefineRadiusPixelsOfDisparity) {
   core::PassParams& p = scene.params;
-  const int col = p.ref_camera.width / 2, row = p.ref_camera.height / 2;
-  const int i = p.state.Index(col, row);
   const float truth = Disparity(p, scene.depth);
-  const float fb = truth * scene.depth;
 
   EXPECT_EQ(p.refine_radius, core::kLocalRefineRadius);
   scene.state_depth[i] = core::DepthAtDisparityOffset(fb, scene.depth, 3.0f);
@@ -44,15 +55,9 @@ TEST(LocalRefine, SweepsRefineRadiusPixelsOfDisparity) {
 }
 
 // A held pixel (core::PassParams::held) is left where it is by the sweep.
-TEST(LocalRefine, LeavesAHeldPixel) {
-  test::PlaneScene scene;
-  test::MakeScene(4.0f, true, &scene);
+TEST_F(LocalRefine, LeavesAHeldPixel) {
   core::PassParams& p = scene.params;
-  const int col = p.ref_camera.width / 2, row = p.ref_camera.height / 2;
-  const int i = p.state.Index(col, row);
-  const float fb = Disparity(p, scene.depth) * scene.depth;
-  std::vector<uint8_t> held(static_cast<size_t>(p.state.width) * p.state.height, 0);
-  held[i] = 1;
+  const std::vector<uint8_t> held = test::OnePixelMask(p, col, row);
   p.held = held.data();
   const float off = core::DepthAtDisparityOffset(fb, scene.depth, 3.0f);
   scene.state_depth[i] = off;

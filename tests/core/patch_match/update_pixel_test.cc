@@ -273,9 +273,7 @@ TEST(UpdatePixel, UnlitPixelHoldsNoPlaneAndIsNeverUpdated) {
   test::PlaneScene s;
   MakeScoredScene(&s);
   PassParams& p = s.params;
-  std::vector<uint8_t> unlit(static_cast<size_t>(p.state.width) * p.state.height, 0);
-  const int i = p.state.Index(kCol, kRow);
-  unlit[i] = 1;
+  const std::vector<uint8_t> unlit = test::OnePixelMask(p, kCol, kRow);
   p.unlit = unlit.data();
   ASSERT_GT(PlaneAt(p, kCol, kRow).depth, 0.0f);  // scored before it was marked
   ScorePixel(p, kCol, kRow);
@@ -297,12 +295,10 @@ TEST(UpdatePixel, HeldPixelKeepsItsPlaneAndStillProposesIt) {
   test::PlaneScene s;
   MakeScoredScene(&s);
   PassParams& p = s.params;
-  std::vector<uint8_t> held(static_cast<size_t>(p.state.width) * p.state.height, 0);
-  const int i = p.state.Index(kCol, kRow);
-  held[i] = 1;
+  const std::vector<uint8_t> held = test::OnePixelMask(p, kCol, kRow);
   p.held = held.data();
   const PlaneHypothesis wrong{1.1f * kDepth, kFrontoParallel};
-  p.state.Set(i, wrong);
+  p.state.Set(p.state.Index(kCol, kRow), wrong);
   ScorePixel(p, kCol, kRow);
   const float cost = StoredCost(p, kCol, kRow);
   for (int iteration = 0; iteration < 3; ++iteration) UpdatePixel(p, kCol, kRow, iteration);

@@ -58,14 +58,15 @@ constexpr int kMixedPixelDepth = 2;
 // along a roofline against the sky a few pixels per hundred pass for a
 // crease (a plain band at the facade's top, a window seeing texture in one
 // direction only), and more of them the finer the image (street scene at
-// 640x480: 16-26 on outlines of 1,000; at 320x240 0-3 on 500), while a
-// surface's own creases and contact lines frame a good part of it. In every
+// 640x480: 16-26 on outlines of 1,000; at 320x240 0-3 on 500; under an
+// overcast sky, barely blue, 55-73 on 740, 5-10 %), while a surface's own
+// creases and contact lines frame a good part of it. In every
 // colour the share emptied office-rgbd's grey walls, whose door frames and
 // corners are short beside their outlines (maps within 5 % 51.8 -> 45.7 %).
 constexpr float kEvidenceCost = 0.3f;
 constexpr float kEvidenceEdge = 0.03f;
 constexpr long kMinOwnEvidence = 12;
-constexpr double kMinOwnEvidenceShare = 0.05;
+constexpr double kMinOwnEvidenceShare = 0.10;
 // Texture in two directions: gradients across the window's main direction
 // of at least this RMS (intensity per pixel). Camera noise of 2 grey levels
 // gives about 0.006, the scene's textures 0.03 and more.

@@ -25,6 +25,7 @@
 #include "patch_match/held_pixels.h"
 #include "patch_match/image_pyramid.h"
 #include "patch_match/open_sky.h"
+#include "patch_match/consensus_planes.h"
 #include "patch_match/planar_prior.h"
 #include "patch_match/problem_level.h"
 #include "patch_match/run_summary.h"
@@ -402,7 +403,7 @@ class PassRunner {
     if (pass.segment_planes) {
       Measured(pass, Step::kSegmentPlanes, [&] { RunSegmentPlanes(params, problem, &state); });
     }
-    if (msp_.planar_prior && params.geometric) {
+    if ((msp_.planar_prior || msp_.consensus_planes) && params.geometric) {
       Measured(pass, Step::kPlanarPrior, [&] { RunPlanarPrior(params, problem, &state); });
     }
     if (pass.prior) Measured(pass, Step::kPrior, [&] { RunPrior(pass, problem, &state); });
@@ -555,19 +556,29 @@ class PassRunner {
     return filter;
   }
 
-  // Planar prior of one image after a geometric pass (docs/method.md section
-  // 2.12), bounded by the segment planes' colour segments.
+  // Planar prior and consensus planes of one image after a geometric pass
+  // (docs/method.md sections 2.12-2.13), bounded by the segment planes' colour
+  // segments; both build on the pixels the other views confirm.
   void RunPlanarPrior(const core::PassParams& params, const Problem& problem, PixelState* state) {
     const auto t0 = std::chrono::steady_clock::now();
     MakeSegments(problem, state);
-    const PlanarPriorReport r =
-        ApplyPlanarPrior(params, OutputFilter(params), state->segments, threads_);
+    const std::vector<uint8_t> evidence = ConfirmedPixels(params, OutputFilter(params), threads_);
     const double pixels = params.state.width * params.state.height;
-    Logf(kLogDetail,
-         "  planar prior: %.1f%% of pixels confirmed, %d triangles, %.1f%% offered, %.1f%% "
-         "took; %.2f s\n",
-         100.0 * r.num_evidence / pixels, r.num_triangles, 100.0 * r.num_offered / pixels,
-         100.0 * r.num_taken / pixels, SecondsSince(t0));
+    if (msp_.planar_prior) {
+      const PlanarPriorReport r = OfferPriorPlanes(params, state->segments, evidence, threads_);
+      Logf(kLogDetail,
+           "  planar prior: %.1f%% of pixels confirmed, %d triangles, %.1f%% offered, %.1f%% "
+           "took; %.2f s\n",
+           100.0 * r.num_evidence / pixels, r.num_triangles, 100.0 * r.num_offered / pixels,
+           100.0 * r.num_taken / pixels, SecondsSince(t0));
+    }
+    if (msp_.consensus_planes) {
+      const ConsensusPlanesReport r =
+          OfferConsensusPlanes(params, state->segments, evidence, threads_);
+      Logf(kLogDetail, "  consensus planes: %d planes, %.1f%% offered, %.1f%% took; %.2f s\n",
+           r.num_planes, 100.0 * r.num_offered / pixels, 100.0 * r.num_taken / pixels,
+           SecondsSince(t0));
+    }
   }
 
   // The maps of the pass, without the open sky (`open_sky`, 1 = no surface;

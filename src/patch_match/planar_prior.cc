@@ -77,9 +77,8 @@ std::vector<PriorTriangle> PriorTriangles(const core::PassParams& params,
   return triangles;
 }
 
-PlanarPriorReport ApplyPlanarPrior(const core::PassParams& params, const core::FilterParams& filter,
-                                   const std::vector<int32_t>& labels, int num_threads) {
-  if (!params.geometric) return PlanarPriorReport();
+std::vector<uint8_t> ConfirmedPixels(const core::PassParams& params,
+                                     const core::FilterParams& filter, int num_threads) {
   const core::PixelStateView& s = params.state;
   std::vector<uint8_t> evidence(static_cast<size_t>(s.width) * s.height, 0);
   ParallelFor(0, s.height, num_threads, [&](int row) {
@@ -88,7 +87,14 @@ PlanarPriorReport ApplyPlanarPrior(const core::PassParams& params, const core::F
           core::CountAgreeingViews(params, filter, col, row) >= filter.min_num_consistent;
     }
   });
-  return OfferPriorPlanes(params, labels, evidence, num_threads);
+  return evidence;
+}
+
+PlanarPriorReport ApplyPlanarPrior(const core::PassParams& params, const core::FilterParams& filter,
+                                   const std::vector<int32_t>& labels, int num_threads) {
+  if (!params.geometric) return PlanarPriorReport();
+  return OfferPriorPlanes(params, labels, ConfirmedPixels(params, filter, num_threads),
+                          num_threads);
 }
 
 PlanarPriorReport OfferPriorPlanes(const core::PassParams& params,

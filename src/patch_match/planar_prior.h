@@ -39,9 +39,14 @@ std::vector<PriorTriangle> PriorTriangles(const core::PassParams& params,
                                           const std::vector<int32_t>& labels,
                                           const std::vector<int>& vertices);
 
+// The evidence of a geometric pass: 1 where core::CountAgreeingViews >=
+// filter.min_num_consistent (the output filter's geometric test without its
+// NCC test).
+std::vector<uint8_t> ConfirmedPixels(const core::PassParams& params,
+                                     const core::FilterParams& filter, int num_threads);
+
 // The whole step on the state of `params` (nothing outside geometric passes):
-// the evidence, core::CountAgreeingViews >= filter.min_num_consistent, then
-// OfferPriorPlanes.
+// ConfirmedPixels, then OfferPriorPlanes.
 PlanarPriorReport ApplyPlanarPrior(const core::PassParams& params, const core::FilterParams& filter,
                                    const std::vector<int32_t>& labels, int num_threads);
 

@@ -162,12 +162,12 @@ TEST(OpenSky, UntexturedOpenSegmentWithoutEvidenceIsSky) {
   EXPECT_EQ(marked, Strips::kStrip * Strips::kHeight);
 }
 
-// In a daylight sky's colour, evidence must be a part of the outline (5 %),
+// In a daylight sky's colour, evidence must be a part of the outline (10 %),
 // not a few pixels along it. Strip 3 has an accepted plane of its own (the
 // strips beside it lie deeper); on its outline of 2 x 300 pixels a
-// crease-like edge of 20 rows (20 evidence pixels on its plane, enough for a
-// plane) is not evidence, one of 40 rows is. In a wall's colour the 20 rows
-// are (a door frame on a long grey wall).
+// crease-like edge of 40 rows (40 evidence pixels on its plane, 6.7 % of the
+// outline, enough for a plane) is not evidence, one of 80 rows is. In a
+// wall's colour the 40 rows are (a door frame on a long grey wall).
 TEST(OpenSky, AFewEdgePixelsAlongASkysLongOutlineAreNoEvidence) {
   StripsOf<300> s;
   s.Set(3, &s.grey, 0.7f);
@@ -175,12 +175,12 @@ TEST(OpenSky, AFewEdgePixelsAlongASkysLongOutlineAreNoEvidence) {
   s.Set(4, &s.depth, 3.0f);
   s.planes[3] = SurroundingPlane();
   s.SetColor(3, 0.55f, 0.7f, 0.9f);
-  s.Edge(2 * s.kStrip, 0, 20);
+  s.Edge(2 * s.kStrip, 0, 40);
   EXPECT_TRUE(s.Marked(s.Run(), 3));
   s.SetColor(3, 0.7f, 0.7f, 0.7f);
   EXPECT_TRUE(s.Untouched(s.Run(), 3));
   s.SetColor(3, 0.55f, 0.7f, 0.9f);
-  s.Edge(2 * s.kStrip, 0, 40);
+  s.Edge(2 * s.kStrip, 0, 80);
   EXPECT_TRUE(s.Untouched(s.Run(), 3));
 }
 

@@ -1,0 +1,204 @@
+#include "patch_match/consensus_planes.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "base/parallel_for.h"
+#include "core/math/rng.h"
+#include "core/patch_match/window_texture.h"
+#include "patch_match/segment_planes.h"
+
+namespace msp {
+namespace {
+
+// A point is on a plane when the plane's depth on its ray is within this
+// share of its own: the output filter's 1 % agreement, halved, so that a
+// plane gathers the points the views agree on and not their neighbours'.
+constexpr float kInlierDepth = 0.005f;
+// A plane claims the points within this share of depth before the next one
+// is sought, so that one surface's scatter does not make a second plane.
+constexpr float kClaimDepth = 0.02f;
+// A weakly textured pixel is offered a plane only when its depth is within
+// this share of the plane's: it is on that surface already, with noise.
+constexpr float kMaxOfferDepth = 0.05f;
+constexpr int kMaxPlanesPerSegment = 3;
+constexpr int kRefits = 2;
+constexpr int kRansacIterations = 200;
+// A plane holds at least this share of the segment's confirmed points.
+constexpr double kMinInlierShare = 0.2;
+// RANSAC scores hypotheses on at most this many points (an even subsample).
+constexpr size_t kMaxScoredPoints = 1024;
+// A plane needs this share of the image's pixels as inliers (100 at 640x480),
+// and at least kMinInliersFloor.
+constexpr int kPixelsPerInlier = 3000;
+constexpr int kMinInliersFloor = 12;
+
+// Depth on `ray` (z = 1) of the plane through `point` with `normal`; 0 when
+// the ray misses it in front of the camera.
+float DepthOnRay(core::Vec3 normal, core::Vec3 point, core::Vec3 ray) {
+  const float denominator = core::Dot(normal, ray);
+  if (std::fabs(denominator) < 1e-12f) return 0.0f;
+  const float depth = core::Dot(normal, point) / denominator;
+  return depth > 0.0f ? depth : 0.0f;
+}
+
+bool OnPlane(core::Vec3 normal, core::Vec3 point, core::Vec3 X, core::Vec3 ray,
+             float tolerance = kInlierDepth) {
+  return std::fabs(DepthOnRay(normal, point, ray) - X.z) < tolerance * X.z;
+}
+
+// Least-squares plane: the centroid and the direction of least spread.
+ConsensusPlane Refit(const std::vector<core::Vec3>& points, const std::vector<size_t>& inliers) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (size_t k : inliers) mean += Eigen::Vector3d(points[k].x, points[k].y, points[k].z);
+  mean /= static_cast<double>(inliers.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (size_t k : inliers) {
+    const Eigen::Vector3d d = Eigen::Vector3d(points[k].x, points[k].y, points[k].z) - mean;
+    cov += d * d.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
+  const Eigen::Vector3d n = solver.eigenvectors().col(0);  // smallest eigenvalue first
+  ConsensusPlane plane;
+  plane.point = core::Vec3{static_cast<float>(mean.x()), static_cast<float>(mean.y()),
+                           static_cast<float>(mean.z())};
+  plane.normal =
+      core::Vec3{static_cast<float>(n.x()), static_cast<float>(n.y()), static_cast<float>(n.z())};
+  if (core::Dot(plane.normal, plane.point) > 0.0f) plane.normal = -1.0f * plane.normal;
+  return plane;
+}
+
+}  // namespace
+
+std::vector<ConsensusPlane> FitConsensusPlanes(const std::vector<core::Vec3>& points,
+                                               const std::vector<core::Vec3>& rays,
+                                               int min_inliers, uint64_t key) {
+  std::vector<ConsensusPlane> planes;
+  const size_t needed = std::max<size_t>(
+      static_cast<size_t>(min_inliers),
+      static_cast<size_t>(std::ceil(kMinInlierShare * static_cast<double>(points.size()))));
+  std::vector<size_t> left(points.size());
+  for (size_t k = 0; k < left.size(); ++k) left[k] = k;
+  core::Rng rng = core::MakeRng(key);
+  while (static_cast<int>(planes.size()) < kMaxPlanesPerSegment && left.size() >= needed) {
+    const size_t stride = (left.size() + kMaxScoredPoints - 1) / kMaxScoredPoints;
+    const auto pick = [&]() {
+      const size_t k = static_cast<size_t>(rng.Uniform() * left.size());
+      return points[left[std::min(k, left.size() - 1)]];
+    };
+    int best_count = 0;
+    core::Vec3 best_normal{0.0f, 0.0f, 0.0f}, best_point{0.0f, 0.0f, 0.0f};
+    for (int it = 0; it < kRansacIterations; ++it) {
+      const core::Vec3 a = pick(), b = pick(), c = pick();
+      const core::Vec3 n = core::Cross(b - a, c - a);
+      const float length = core::Norm(n);
+      if (!(length > 1e-9f)) continue;  // a repeated or collinear triple
+      const core::Vec3 normal = (1.0f / length) * n;
+      int count = 0;
+      for (size_t k = 0; k < left.size(); k += stride) {
+        count += OnPlane(normal, a, points[left[k]], rays[left[k]]) ? 1 : 0;
+      }
+      if (count > best_count) {
+        best_count = count;
+        best_normal = normal;
+        best_point = a;
+      }
+    }
+    if (best_count == 0) break;
+    // The least-squares refit over the points within kClaimDepth, twice: a
+    // refit of the narrow inlier band alone keeps the tilt of the triple
+    // that chose it.
+    ConsensusPlane plane;
+    plane.normal = best_normal;
+    plane.point = best_point;
+    for (int refit = 0; refit < kRefits; ++refit) {
+      std::vector<size_t> members;
+      for (size_t k : left) {
+        if (OnPlane(plane.normal, plane.point, points[k], rays[k], kClaimDepth)) {
+          members.push_back(k);
+        }
+      }
+      if (members.size() < 3) break;
+      plane = Refit(points, members);
+    }
+    std::vector<size_t> rest;
+    for (size_t k : left) {
+      plane.num_inliers += OnPlane(plane.normal, plane.point, points[k], rays[k]) ? 1 : 0;
+      if (!OnPlane(plane.normal, plane.point, points[k], rays[k], kClaimDepth)) rest.push_back(k);
+    }
+    if (static_cast<size_t>(plane.num_inliers) < needed) break;
+    planes.push_back(plane);
+    left.swap(rest);
+  }
+  return planes;
+}
+
+ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
+                                           const std::vector<int32_t>& labels,
+                                           const std::vector<uint8_t>& evidence,
+                                           int num_threads) {
+  ConsensusPlanesReport report;
+  const core::PixelStateView& s = params.state;
+  const int n = s.width * s.height;
+  if (labels.size() != static_cast<size_t>(n) || evidence.size() != static_cast<size_t>(n)) {
+    throw std::logic_error("consensus planes: labels, evidence and pixel state differ in size");
+  }
+  const int num_segments = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end());
+  const auto ray = [&](int i) {
+    return core::BackProject(params.ref_camera, static_cast<float>(i % s.width),
+                             static_cast<float>(i / s.width), 1.0f);
+  };
+  // The confirmed pixels of every segment, and its planes.
+  std::vector<std::vector<int>> members(num_segments + 1);
+  for (int i = 0; i < n; ++i) {
+    if (labels[i] > 0 && evidence[i] && s.depth[i] > 0.0f) members[labels[i]].push_back(i);
+  }
+  const int min_inliers = std::max(kMinInliersFloor, n / kPixelsPerInlier);
+  std::vector<std::vector<ConsensusPlane>> planes(num_segments + 1);
+  ParallelFor(1, num_segments + 1, num_threads, [&](int id) {
+    if (static_cast<int>(members[id].size()) < min_inliers) return;
+    std::vector<core::Vec3> points, rays;
+    for (int i : members[id]) {
+      rays.push_back(ray(i));
+      points.push_back(s.depth[i] * rays.back());
+    }
+    const uint64_t key = core::RngKey(params.seed, params.image_id, params.pass_id, 0xC0DEu,
+                                      static_cast<uint32_t>(id));
+    planes[id] = FitConsensusPlanes(points, rays, min_inliers, key);
+  });
+  for (const auto& p : planes) report.num_planes += static_cast<int>(p.size());
+
+  std::vector<int> offered(s.height, 0), taken(s.height, 0);
+  ParallelFor(0, s.height, num_threads, [&](int row) {
+    for (int col = 0; col < s.width; ++col) {
+      const int i = s.Index(col, row);
+      const float depth = s.depth[i];
+      if (labels[i] <= 0 || planes[labels[i]].empty() || !(depth > 0.0f) ||
+          core::IsUnlit(params, i) || !core::IsWeaklyTextured(params, col, row)) {
+        continue;
+      }
+      const core::Vec3 r = ray(i);
+      const ConsensusPlane* nearest = nullptr;
+      float nearest_error = kMaxOfferDepth;
+      for (const ConsensusPlane& plane : planes[labels[i]]) {
+        const float error = std::fabs(DepthOnRay(plane.normal, plane.point, r) - depth) / depth;
+        if (error < nearest_error) {
+          nearest_error = error;
+          nearest = &plane;
+        }
+      }
+      if (nearest == nullptr) continue;
+      ++offered[row];
+      taken[row] += OfferPlane(params, col, row, nearest->normal, nearest->point, true);
+    }
+  });
+  for (int row = 0; row < s.height; ++row) {
+    report.num_offered += offered[row];
+    report.num_taken += taken[row];
+  }
+  return report;
+}
+
+}  // namespace msp

@@ -262,7 +262,7 @@ void DefineMspStereoCommonOptions(MspStereoOptions* m, OptionVisitor* t) {
   MSP_ADD_OPTION(t, *m, consensus_planes,
                  "In geometric passes, fit planes to each colour segment's pixels that the other "
                  "views confirm, and offer the nearest to each weakly textured pixel of the segment "
-                 "whose depth lies within 5 % of one: thousands of confirmed depths averaged into "
+                 "whose depth lies within 3 % of one: thousands of confirmed depths averaged into "
                  "one surface (docs/method.md section 2.13).");
   MSP_ADD_OPTION(t, *m, depth_range_from_sources,
                  "Depth range of each reference image (unless --PatchMatchStereo.depth_min/max "

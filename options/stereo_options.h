@@ -133,8 +133,8 @@ struct MspStereoOptions {
   // one colour segment, offered to the unconfirmed pixels within (docs/method.md section 2.12).
   bool planar_prior = true;
   // In geometric passes, planes fitted to each colour segment's confirmed pixels, offered to its
-  // weakly textured pixels within 5 % of one (docs/method.md section 2.13).
-  bool consensus_planes = false;
+  // weakly textured pixels within 3 % of one (docs/method.md section 2.13).
+  bool consensus_planes = true;
   // Depth range of a reference image from the sparse points it or any of its sources observes
   // that lie in front of it and inside its image (COLMAP's percentile rule on more points);
   // false = its own observations only, as COLMAP.

@@ -21,8 +21,10 @@ constexpr float kInlierDepth = 0.005f;
 // is sought, so that one surface's scatter does not make a second plane.
 constexpr float kClaimDepth = 0.02f;
 // A weakly textured pixel is offered a plane only when its depth is within
-// this share of the plane's: it is on that surface already, with noise.
-constexpr float kMaxOfferDepth = 0.05f;
+// this share of the plane's: it is on that surface already, with noise. With
+// 5 % the bundled scene's textureless pixels within 5 % fell by 1.7 points
+// (a wrong plane that the views agree on reached further).
+constexpr float kMaxOfferDepth = 0.03f;
 constexpr int kMaxPlanesPerSegment = 3;
 constexpr int kRefits = 2;
 constexpr int kRansacIterations = 200;
@@ -73,8 +75,8 @@ ConsensusPlane Refit(const std::vector<core::Vec3>& points, const std::vector<si
 }  // namespace
 
 std::vector<ConsensusPlane> FitConsensusPlanes(const std::vector<core::Vec3>& points,
-                                               const std::vector<core::Vec3>& rays,
-                                               int min_inliers, uint64_t key) {
+                                               const std::vector<core::Vec3>& rays, int min_inliers,
+                                               uint64_t key) {
   std::vector<ConsensusPlane> planes;
   const size_t needed = std::max<size_t>(
       static_cast<size_t>(min_inliers),
@@ -137,8 +139,7 @@ std::vector<ConsensusPlane> FitConsensusPlanes(const std::vector<core::Vec3>& po
 
 ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
                                            const std::vector<int32_t>& labels,
-                                           const std::vector<uint8_t>& evidence,
-                                           int num_threads) {
+                                           const std::vector<uint8_t>& evidence, int num_threads) {
   ConsensusPlanesReport report;
   const core::PixelStateView& s = params.state;
   const int n = s.width * s.height;

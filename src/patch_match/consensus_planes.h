@@ -34,8 +34,8 @@ struct ConsensusPlane {
 // points within kInlierDepth of depth along their rays and a fifth of them.
 // Deterministic for a given `key`.
 std::vector<ConsensusPlane> FitConsensusPlanes(const std::vector<core::Vec3>& points,
-                                               const std::vector<core::Vec3>& rays,
-                                               int min_inliers, uint64_t key);
+                                               const std::vector<core::Vec3>& rays, int min_inliers,
+                                               uint64_t key);
 
 // The whole step on the state of `params`: planes of every segment of
 // `labels` (ids >= 1) over its `evidence` pixels (1), then the offer of the
@@ -43,7 +43,6 @@ std::vector<ConsensusPlane> FitConsensusPlanes(const std::vector<core::Vec3>& po
 // within kMaxOfferDepth of it, under the segment planes' rule (OfferPlane).
 ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
                                            const std::vector<int32_t>& labels,
-                                           const std::vector<uint8_t>& evidence,
-                                           int num_threads);
+                                           const std::vector<uint8_t>& evidence, int num_threads);
 
 }  // namespace msp

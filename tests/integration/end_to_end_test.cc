@@ -7,14 +7,14 @@
 // Three scenes (320x240, 6 views, seeds 1-3, each run with its seed) and the
 // mean of their figures: one seed swings with the draws, the mean of three
 // is steady enough for bounds a regression cannot pass. Measured with the
-// default options (per seed, then the mean):
-//   maps within 5 % of valid pixels       0.845 0.836 0.844  0.842
-//   fused accuracy at 2 % of the extent   0.960 0.963 0.961  0.961
-//   F1 over >= 3-view surface at 2 %      0.854 0.844 0.846  0.848
-//   textureless pixels within 1 %         0.365 0.373 0.400  0.379
-//   pixels near a depth edge within 1 %   0.329 0.335 0.342  0.335
-//   near an alike-colour edge within 1 %  0.282 0.295 0.308  0.295
-//   sky pixels (ground truth empty) with a depth  0.035 0.034 0.035  0.034
+// default options (the mean of the three seeds):
+//   maps within 5 % of valid pixels               0.845
+//   fused accuracy at 2 % of the extent           0.947
+//   F1 over >= 3-view surface at 2 %              0.906
+//   textureless pixels within 1 %                 0.483 (0.454 without consensus planes)
+//   pixels near a depth edge within 1 %           0.359
+//   near an alike-colour edge within 1 %          0.331
+//   sky pixels (ground truth empty) with a depth  0.034
 // What the bounds catch (means, same scenes): segment planes off gives maps
 // 0.758, F1 0.734, textureless 0.261 and depth on 83 % of the sky; the open
 // sky rule off gives fused accuracy 0.898 and depth on 93 % of the sky.
@@ -48,12 +48,12 @@ namespace fs = std::filesystem;
 constexpr double kMinMapAccuracy5 = 0.80;         // valid pixels within 5 % depth
 constexpr double kMinFusedAccuracyCoarse = 0.93;  // fused points within 2 % of the extent
 constexpr double kMinF1MultiCoarse = 0.82;        // F1 over >= 3-view surface at 2 %
-constexpr double kMinTexturelessWithin1 = 0.34;   // textureless ground-truth pixels within 1 %
-constexpr double kMinNearEdgeWithin1 = 0.30;      // pixels near a true depth edge within 1 %
+constexpr double kMinTexturelessWithin1 = 0.44;   // textureless ground-truth pixels within 1 %
+constexpr double kMinNearEdgeWithin1 = 0.32;      // pixels near a true depth edge within 1 %
 // Near depth edges between alike colours (the segmentation prior's target):
 // ground-truth pixels within 1 %, and the region's share of all ground-truth
 // pixels, which the scene's camouflaged objects keep measurable.
-constexpr double kMinAlikeEdgeWithin1 = 0.26;
+constexpr double kMinAlikeEdgeWithin1 = 0.29;
 constexpr double kMinAlikeEdgeShare = 0.08;
 // Pixels whose ground truth is empty (the sky through the window) that the
 // maps give a depth: the outline's mixed pixels, nothing more.

@@ -22,19 +22,21 @@ const core::Vec3 kFloorNormal = core::Normalized(core::Vec3{0.0f, -1.0f, -0.5f})
 constexpr int kCreaseRow = 75;  // half of the 150 rows
 
 core::PlaneHypothesis OnSurface(const core::Camera& cam, int col, int row) {
-  const core::PlaneHypothesis wall = core::HypothesisOnPlane(cam, col, row, kWallNormal, kWallPoint);
+  const core::PlaneHypothesis wall =
+      core::HypothesisOnPlane(cam, col, row, kWallNormal, kWallPoint);
   if (row < kCreaseRow) return wall;
   // The floor through the wall's point on the crease row.
-  const core::Vec3 crease = core::BackProject(cam, 0.0f, static_cast<float>(kCreaseRow),
-                                              core::HypothesisOnPlane(cam, 0, kCreaseRow,
-                                                                      kWallNormal, kWallPoint)
-                                                  .depth);
+  const core::Vec3 crease =
+      core::BackProject(cam, 0.0f, static_cast<float>(kCreaseRow),
+                        core::HypothesisOnPlane(cam, 0, kCreaseRow, kWallNormal, kWallPoint).depth);
   return core::HypothesisOnPlane(cam, col, row, kFloorNormal, crease);
 }
 
 // Depth noise of +-1 % (uniform, seeded) on a pixel's true plane: the scatter
 // of confirmed depths on a blank surface (the views agree within 1 %).
-float Noise(int i) { return core::RandomUniform(0x5EEDu, static_cast<uint32_t>(i)) * 0.02f - 0.01f; }
+float Noise(int i) {
+  return core::RandomUniform(0x5EEDu, static_cast<uint32_t>(i)) * 0.02f - 0.01f;
+}
 
 struct Fixture {
   test::PlaneScene scene;

@@ -258,10 +258,13 @@ void LoadViews(const std::vector<Problem>& problems, int max_image_size, size_t 
 
 // The segmentation prior's mask layers of every reference view, read at the
 // working resolution; views without mask files are left to the embedded
-// segmenter. The prior only runs with deformable patches, so nothing is read
-// otherwise.
+// segmenter. The prior runs with deformable patches and bounds the consensus
+// planes, so nothing is read without either.
 void LoadPriorMaskLayers(const StereoCommandOptions& options, Workspace* ws) {
-  if (!options.msp.segmentation_prior || !options.msp.deformable) return;
+  if (!options.msp.segmentation_prior ||
+      !(options.msp.deformable || options.msp.consensus_planes)) {
+    return;
+  }
   std::vector<int> refs;
   for (const Problem& problem : ws->problems) {
     if (std::find(refs.begin(), refs.end(), problem.ref) == refs.end()) refs.push_back(problem.ref);

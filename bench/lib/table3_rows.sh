@@ -20,8 +20,8 @@ NO_SYN="--MspStereo.synergistic_optimization false"
 # the row above (segment planes, our own step, stay on throughout); the next
 # three take one piece out of the full method's 3D optimization; `default`
 # is what msp_stereo runs without options (the conventional core), and the
-# last four take one of its answers to weak texture out (docs/method.md
-# sections 2.7, 2.9 and 2.12).
+# last five take one of its answers to weak texture out (docs/method.md
+# sections 2.7, 2.9, 2.12 and 2.13).
 rows=(
   "baseline|APD-MVS baseline|$METHOD $NO_PRIOR $NO_EQD $NO_CLU $NO_SYN"
   "prior|+ prior: colour layers, union of their edges|$METHOD $NO_AGR $NO_REF $NO_GEO $NO_EQD $NO_CLU $NO_SYN"
@@ -39,6 +39,7 @@ rows=(
   "sweep_normals|default with the sweeps' normals (not from the depth)|--MspStereo.normals_from_depth false"
   "reprojection_filter|default with COLMAP's 1 px reprojection filter|--MspStereo.filter_max_depth_error 0"
   "pixel_geometry|default with the geometric passes' error in pixels|--MspStereo.geom_consistency_depth_error 0"
+  "no_consensus_planes|default w/o the consensus planes|--MspStereo.consensus_planes false"
 )
 
 # Rows with the scene's ideal mask layers (msp_make_scene --ideal_masks: its
@@ -46,11 +47,13 @@ rows=(
 # bench/table3.sh --ideal_masks, which puts them after `full`. `full` is
 # `default` with deformable patches, so full_ideal is both with the perfect
 # prior (`default` itself runs no prior); noref_ideal shows what the CRF does
-# to edges that are already exact.
+# to edges that are already exact; default_ideal gives the consensus planes
+# the true surfaces as regions (docs/method.md section 2.13).
 # shellcheck disable=SC2034  # used by bench/table3.sh
 ideal_rows=(
   "full_ideal|MSP-MVS, ideal masks|$METHOD"
   "noref_ideal|MSP-MVS, ideal masks, w/o Ref. (no CRF)|$METHOD $NO_REF"
+  "default_ideal|default options, ideal masks (the consensus planes' regions)|"
 )
 
 # plan_fields ROW: sets `id`, `label` and the array `options` from an

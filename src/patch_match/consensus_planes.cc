@@ -20,11 +20,6 @@ constexpr float kInlierDepth = 0.005f;
 // A plane claims the points within this share of depth before the next one
 // is sought, so that one surface's scatter does not make a second plane.
 constexpr float kClaimDepth = 0.02f;
-// A weakly textured pixel is offered a plane only when its depth is within
-// this share of the plane's: it is on that surface already, with noise. With
-// 5 % the bundled scene's textureless pixels within 5 % fell by 1.7 points
-// (a wrong plane that the views agree on reached further).
-constexpr float kMaxOfferDepth = 0.03f;
 constexpr int kMaxPlanesPerSegment = 3;
 constexpr int kRefits = 2;
 constexpr int kRansacIterations = 200;
@@ -139,7 +134,8 @@ std::vector<ConsensusPlane> FitConsensusPlanes(const std::vector<core::Vec3>& po
 
 ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
                                            const std::vector<int32_t>& labels,
-                                           const std::vector<uint8_t>& evidence, int num_threads) {
+                                           const std::vector<uint8_t>& evidence,
+                                           float max_offer_depth, int num_threads) {
   ConsensusPlanesReport report;
   const core::PixelStateView& s = params.state;
   const int n = s.width * s.height;
@@ -182,10 +178,11 @@ ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
       }
       const core::Vec3 r = ray(i);
       const ConsensusPlane* nearest = nullptr;
-      float nearest_error = kMaxOfferDepth;
+      float nearest_error = max_offer_depth;
       for (const ConsensusPlane& plane : planes[labels[i]]) {
-        const float error = std::fabs(DepthOnRay(plane.normal, plane.point, r) - depth) / depth;
-        if (error < nearest_error) {
+        const float on_plane = DepthOnRay(plane.normal, plane.point, r);
+        const float error = std::fabs(on_plane - depth) / depth;
+        if (on_plane > 0.0f && error < nearest_error) {
           nearest_error = error;
           nearest = &plane;
         }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -556,6 +557,18 @@ class PassRunner {
     return filter;
   }
 
+  // The finest layer of view `ref`'s mask files at the size of `params`'
+  // state; empty without mask files.
+  std::vector<int32_t> MaskRegions(int ref, const core::PassParams& params) const {
+    const ImageLabelLayers& given = views_[ref].mask_layers;
+    if (given.source != LabelSource::kMaskFiles || given.layers.levels.empty()) return {};
+    LabelLayers finest;
+    finest.width = given.layers.width;
+    finest.height = given.layers.height;
+    finest.levels.push_back(given.layers.levels.back());
+    return ResampleNearest(finest, params.state.width, params.state.height).levels.front();
+  }
+
   // Planar prior and consensus planes of one image after a geometric pass
   // (docs/method.md sections 2.12-2.13), bounded by the segment planes' colour
   // segments; both build on the pixels the other views confirm.
@@ -573,8 +586,14 @@ class PassRunner {
            100.0 * r.num_taken / pixels, SecondsSince(t0));
     }
     if (msp_.consensus_planes) {
+      // The user's finest mask layer, when given, is the regions: one surface
+      // each, whose weakly textured pixels all take the nearest of its planes.
+      const std::vector<int32_t> regions = MaskRegions(problem.ref, params);
       const ConsensusPlanesReport r =
-          OfferConsensusPlanes(params, state->segments, evidence, threads_);
+          regions.empty() ? OfferConsensusPlanes(params, state->segments, evidence,
+                                                 kSegmentOfferDepth, threads_)
+                          : OfferConsensusPlanes(params, regions, evidence,
+                                                 std::numeric_limits<float>::infinity(), threads_);
       Logf(kLogDetail, "  consensus planes: %d planes, %.1f%% offered, %.1f%% took; %.2f s\n",
            r.num_planes, 100.0 * r.num_offered / pixels, 100.0 * r.num_taken / pixels,
            SecondsSince(t0));

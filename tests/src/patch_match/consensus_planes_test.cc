@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "core/math/plane.h"
@@ -87,7 +88,8 @@ TEST(ConsensusPlanes, NoisyPixelsOfTwoSurfacesInOneSegmentTakeTheirOwnPlane) {
   for (int row = 0; row < p.state.height; ++row) {
     for (int col = 0; col < 70; ++col) off_before += RelativeError(p, col, row) > 0.005f ? 1 : 0;
   }
-  const ConsensusPlanesReport r = OfferConsensusPlanes(p, f.labels, f.evidence, 2);
+  const ConsensusPlanesReport r =
+      OfferConsensusPlanes(p, f.labels, f.evidence, kSegmentOfferDepth, 2);
   EXPECT_EQ(r.num_planes, 2);
   EXPECT_GT(r.num_taken, 0);
   for (int row = 0; row < p.state.height; ++row) {
@@ -119,7 +121,8 @@ TEST(ConsensusPlanes, APlaneStaysInItsSegment) {
     }
   }
   const std::vector<float> before(f.scene.state_depth);
-  const ConsensusPlanesReport r = OfferConsensusPlanes(p, f.labels, f.evidence, 1);
+  const ConsensusPlanesReport r =
+      OfferConsensusPlanes(p, f.labels, f.evidence, kSegmentOfferDepth, 1);
   EXPECT_EQ(r.num_planes, 1);
   for (int row = kCreaseRow; row < p.state.height; ++row) {
     for (int col = 0; col < p.state.width; ++col) {
@@ -128,6 +131,26 @@ TEST(ConsensusPlanes, APlaneStaysInItsSegment) {
     }
   }
   EXPECT_LT(RelativeError(p, 30, kCreaseRow / 2), 0.005f);
+}
+
+// A region of the user's masks is one surface: with no depth bound, the band
+// 20 % off (another surface's plane carried on) takes its own surface's
+// plane too; with the colour segments' bound it keeps its depth.
+TEST(ConsensusPlanes, InAMaskRegionEveryWeaklyTexturedPixelTakesItsPlane) {
+  Fixture f = MakeFixture();
+  const core::PassParams& p = f.scene.params;
+  for (int row = kCreaseRow; row < p.state.height; ++row) {
+    for (int col = 0; col < p.state.width; ++col) f.labels[p.state.Index(col, row)] = 2;
+  }
+  OfferConsensusPlanes(p, f.labels, f.evidence, std::numeric_limits<float>::infinity(), 2);
+  int band = 0, on_plane = 0;
+  for (int row = 0; row < p.state.height; ++row) {
+    for (int col = 70; col < 80; ++col) {
+      on_plane += RelativeError(p, col, row) < 0.005f ? 1 : 0;
+      ++band;
+    }
+  }
+  EXPECT_GT(on_plane, 0.95 * band);
 }
 
 // Sequential RANSAC: two planes with their shares of the points and outliers

@@ -7,8 +7,8 @@
 
 #include "base/parallel_for.h"
 #include "core/math/rng.h"
+#include "core/patch_match/segment_plane.h"
 #include "core/patch_match/window_texture.h"
-#include "patch_match/segment_planes.h"
 
 namespace msp {
 namespace {
@@ -135,7 +135,7 @@ std::vector<ConsensusPlane> FitConsensusPlanes(const std::vector<core::Vec3>& po
 ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
                                            const std::vector<int32_t>& labels,
                                            const std::vector<uint8_t>& evidence,
-                                           float max_offer_depth, int num_threads) {
+                                           const ConsensusOffer& offer, int num_threads) {
   ConsensusPlanesReport report;
   const core::PixelStateView& s = params.state;
   const int n = s.width * s.height;
@@ -178,7 +178,7 @@ ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
       }
       const core::Vec3 r = ray(i);
       const ConsensusPlane* nearest = nullptr;
-      float nearest_error = max_offer_depth;
+      float nearest_error = offer.max_depth;
       for (const ConsensusPlane& plane : planes[labels[i]]) {
         const float on_plane = DepthOnRay(plane.normal, plane.point, r);
         const float error = std::fabs(on_plane - depth) / depth;
@@ -189,7 +189,11 @@ ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
       }
       if (nearest == nullptr) continue;
       ++offered[row];
-      taken[row] += OfferPlane(params, col, row, nearest->normal, nearest->point, true);
+      core::OfferSegmentPlane(
+          params, col, row,
+          core::HypothesisOnPlane(params.ref_camera, col, row, nearest->normal, nearest->point),
+          offer.margin);
+      taken[row] += s.depth[i] != depth ? 1 : 0;
     }
   });
   for (int row = 0; row < s.height; ++row) {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "core/patch_match/patch_match_kernel.h"
@@ -37,20 +38,34 @@ std::vector<ConsensusPlane> FitConsensusPlanes(const std::vector<core::Vec3>& po
                                                const std::vector<core::Vec3>& rays, int min_inliers,
                                                uint64_t key);
 
-// Relative depth within which a weakly textured pixel is offered a colour
-// segment's plane: it is on that surface already, with noise. With 5 % the
-// bundled scene's textureless pixels within 5 % fell by 1.7 points (a wrong
-// plane that the views agree on reached further).
-constexpr float kSegmentOfferDepth = 0.03f;
+// How a region's planes are offered: to each weakly textured pixel of the
+// region whose depth lies within `max_depth` (relative) of one of them, which
+// takes the nearest unless that costs `margin` more over its selected views
+// than its own plane (core::OfferSegmentPlane).
+struct ConsensusOffer {
+  float max_depth;
+  float margin;
+};
+
+// Colour segments join surfaces of one colour: a plane goes only to the
+// pixels already on its surface, with noise (with 5 % the bundled scene's
+// textureless pixels within 5 % fell by 1.7 points: a wrong plane that the
+// views agree on reached further), under the segment planes' margin.
+constexpr ConsensusOffer kSegmentOffer{0.03f, 0.1f};
+// A region of the user's mask layers is one surface (what a segmenter such
+// as Semantic-SAM is for): every weakly textured pixel of it takes the
+// nearest of its planes, whatever its depth and cost. The views confirmed
+// the plane on the region's other pixels; a pixel's own cost, where the
+// views agree on a wrong depth, is no evidence against it (with the margin
+// the bundled scene's ideal masks gave a third of the gain).
+constexpr ConsensusOffer kMaskRegionOffer{std::numeric_limits<float>::infinity(),
+                                          core::kUnboundedCost};
 
 // The whole step on the state of `params`: planes of every region of
-// `labels` (ids >= 1) over its `evidence` pixels (1), then the offer of the
-// nearest plane to each weakly textured pixel of the region whose depth lies
-// within `max_offer_depth` of it (relative; infinity = every such pixel),
-// under the segment planes' rule (OfferPlane).
+// `labels` (ids >= 1) over its `evidence` pixels (1), then their offer.
 ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
                                            const std::vector<int32_t>& labels,
                                            const std::vector<uint8_t>& evidence,
-                                           float max_offer_depth, int num_threads);
+                                           const ConsensusOffer& offer, int num_threads);
 
 }  // namespace msp

@@ -590,10 +590,9 @@ class PassRunner {
       // each, whose weakly textured pixels all take the nearest of its planes.
       const std::vector<int32_t> regions = MaskRegions(problem.ref, params);
       const ConsensusPlanesReport r =
-          regions.empty() ? OfferConsensusPlanes(params, state->segments, evidence,
-                                                 kSegmentOfferDepth, threads_)
-                          : OfferConsensusPlanes(params, regions, evidence,
-                                                 std::numeric_limits<float>::infinity(), threads_);
+          regions.empty()
+              ? OfferConsensusPlanes(params, state->segments, evidence, kSegmentOffer, threads_)
+              : OfferConsensusPlanes(params, regions, evidence, kMaskRegionOffer, threads_);
       Logf(kLogDetail, "  consensus planes: %d planes, %.1f%% offered, %.1f%% took; %.2f s\n",
            r.num_planes, 100.0 * r.num_offered / pixels, 100.0 * r.num_taken / pixels,
            SecondsSince(t0));

@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "core/math/plane.h"
@@ -88,8 +87,7 @@ TEST(ConsensusPlanes, NoisyPixelsOfTwoSurfacesInOneSegmentTakeTheirOwnPlane) {
   for (int row = 0; row < p.state.height; ++row) {
     for (int col = 0; col < 70; ++col) off_before += RelativeError(p, col, row) > 0.005f ? 1 : 0;
   }
-  const ConsensusPlanesReport r =
-      OfferConsensusPlanes(p, f.labels, f.evidence, kSegmentOfferDepth, 2);
+  const ConsensusPlanesReport r = OfferConsensusPlanes(p, f.labels, f.evidence, kSegmentOffer, 2);
   EXPECT_EQ(r.num_planes, 2);
   EXPECT_GT(r.num_taken, 0);
   for (int row = 0; row < p.state.height; ++row) {
@@ -121,8 +119,7 @@ TEST(ConsensusPlanes, APlaneStaysInItsSegment) {
     }
   }
   const std::vector<float> before(f.scene.state_depth);
-  const ConsensusPlanesReport r =
-      OfferConsensusPlanes(p, f.labels, f.evidence, kSegmentOfferDepth, 1);
+  const ConsensusPlanesReport r = OfferConsensusPlanes(p, f.labels, f.evidence, kSegmentOffer, 1);
   EXPECT_EQ(r.num_planes, 1);
   for (int row = kCreaseRow; row < p.state.height; ++row) {
     for (int col = 0; col < p.state.width; ++col) {
@@ -142,7 +139,7 @@ TEST(ConsensusPlanes, InAMaskRegionEveryWeaklyTexturedPixelTakesItsPlane) {
   for (int row = kCreaseRow; row < p.state.height; ++row) {
     for (int col = 0; col < p.state.width; ++col) f.labels[p.state.Index(col, row)] = 2;
   }
-  OfferConsensusPlanes(p, f.labels, f.evidence, std::numeric_limits<float>::infinity(), 2);
+  OfferConsensusPlanes(p, f.labels, f.evidence, kMaskRegionOffer, 2);
   int band = 0, on_plane = 0;
   for (int row = 0; row < p.state.height; ++row) {
     for (int col = 70; col < 80; ++col) {

@@ -295,7 +295,10 @@ void DefineMspStereoCommonOptions(MspStereoOptions* m, OptionVisitor* t) {
                      MSP_OPTION_FLAG(*m, mask_path) +
                      ", else the embedded segmenter): after each deformable pass its depth edges "
                      "are recomputed, and later passes take no anchor across them; needs " +
-                     MSP_OPTION_FLAG(*m, deformable) + ". false = w/o Mul. (APD-MVS).");
+                     MSP_OPTION_FLAG(*m, deformable) +
+                     ". Mask files given, their finest layer also bounds the consensus planes "
+                     "(docs/method.md section 2.13), with or without deformable patches. false = "
+                     "w/o Mul. (APD-MVS), and mask files are not read.");
   MSP_ADD_OPTION(t, *m, edge_aggregation,
                  "Aggregate the mask layers per region by their best anchor subsets (eqs. 4-5); "
                  "false = the union of all layers' boundaries (w/o Agr.).");

@@ -23,7 +23,7 @@ constexpr float kClaimDepth = 0.02f;
 constexpr int kMaxPlanesPerSegment = 3;
 constexpr int kRefits = 2;
 constexpr int kRansacIterations = 200;
-// A plane holds at least this share of the segment's confirmed points.
+// A plane holds at least this share of the region's confirmed points.
 constexpr double kMinInlierShare = 0.2;
 // RANSAC scores hypotheses on at most this many points (an even subsample).
 constexpr size_t kMaxScoredPoints = 1024;
@@ -142,19 +142,19 @@ ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
   if (labels.size() != static_cast<size_t>(n) || evidence.size() != static_cast<size_t>(n)) {
     throw std::logic_error("consensus planes: labels, evidence and pixel state differ in size");
   }
-  const int num_segments = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end());
+  const int num_regions = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end());
   const auto ray = [&](int i) {
     return core::BackProject(params.ref_camera, static_cast<float>(i % s.width),
                              static_cast<float>(i / s.width), 1.0f);
   };
-  // The confirmed pixels of every segment, and its planes.
-  std::vector<std::vector<int>> members(num_segments + 1);
+  // The confirmed pixels of every region, and its planes.
+  std::vector<std::vector<int>> members(num_regions + 1);
   for (int i = 0; i < n; ++i) {
     if (labels[i] > 0 && evidence[i] && s.depth[i] > 0.0f) members[labels[i]].push_back(i);
   }
   const int min_inliers = std::max(kMinInliersFloor, n / kPixelsPerInlier);
-  std::vector<std::vector<ConsensusPlane>> planes(num_segments + 1);
-  ParallelFor(1, num_segments + 1, num_threads, [&](int id) {
+  std::vector<std::vector<ConsensusPlane>> planes(num_regions + 1);
+  ParallelFor(1, num_regions + 1, num_threads, [&](int id) {
     if (static_cast<int>(members[id].size()) < min_inliers) return;
     std::vector<core::Vec3> points, rays;
     for (int i : members[id]) {

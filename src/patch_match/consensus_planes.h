@@ -1,11 +1,12 @@
 // Consensus planes (docs/method.md section 2.13): in a geometric pass, the
-// pixels of a colour segment whose depth the other views bring back are
-// points on its surfaces; planes fitted to them by sequential RANSAC average
-// the depth noise of thousands of confirmed pixels, and every weakly textured
-// pixel of the segment that lies within a few percent of one of them is
-// offered it. The segment bounds where a plane may reach; the tolerance keeps
-// a plane to the pixels already on its surface, so it sharpens their depth
-// without carrying one surface's plane onto another of the same colour.
+// pixels of a region whose depth the other views bring back are points on its
+// surfaces; planes fitted to them by sequential RANSAC average the depth noise
+// of thousands of confirmed pixels, and the region's weakly textured pixels
+// are offered them. The region bounds where a plane may reach. A colour
+// segment may join two surfaces of one colour, so its planes go only to the
+// pixels within a few percent of them (they sharpen right depth); a region of
+// the user's mask layers is one surface, and all its weakly textured pixels
+// take the nearest of its planes (they also replace wrong depth).
 #pragma once
 
 #include <cstdint>
@@ -17,8 +18,8 @@
 namespace msp {
 
 struct ConsensusPlanesReport {
-  int num_planes = 0;   // planes fitted over all segments
-  int num_offered = 0;  // weakly textured pixels within the tolerance of a plane
+  int num_planes = 0;   // planes fitted over all regions
+  int num_offered = 0;  // weakly textured pixels offered a plane
   int num_taken = 0;    // pixels that took it
 };
 

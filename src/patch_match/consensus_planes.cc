@@ -125,6 +125,7 @@ std::vector<ConsensusPlane> FitConsensusPlanes(const std::vector<core::Vec3>& po
       plane.num_inliers += OnPlane(plane.normal, plane.point, points[k], rays[k]) ? 1 : 0;
       if (!OnPlane(plane.normal, plane.point, points[k], rays[k], kClaimDepth)) rest.push_back(k);
     }
+    plane.num_claimed = static_cast<int>(left.size() - rest.size());
     if (static_cast<size_t>(plane.num_inliers) < needed) break;
     planes.push_back(plane);
     left.swap(rest);
@@ -166,6 +167,14 @@ ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
     planes[id] = FitConsensusPlanes(points, rays, min_inliers, key);
   });
   for (const auto& p : planes) report.num_planes += static_cast<int>(p.size());
+  // The offer of every region: `offer`, or kSegmentOffer where `offer` asks
+  // for one surface and the region's confirmed pixels are not on one plane.
+  std::vector<const ConsensusOffer*> rule(num_regions + 1, &offer);
+  for (int id = 1; offer.one_surface && id <= num_regions; ++id) {
+    const bool one_surface = planes[id].size() == 1 &&
+                             planes[id][0].num_claimed >= kOneSurfaceShare * members[id].size();
+    if (!one_surface) rule[id] = &kSegmentOffer;
+  }
 
   std::vector<int> offered(s.height, 0), taken(s.height, 0);
   ParallelFor(0, s.height, num_threads, [&](int row) {
@@ -178,7 +187,8 @@ ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
       }
       const core::Vec3 r = ray(i);
       const ConsensusPlane* nearest = nullptr;
-      float nearest_error = offer.max_depth;
+      const ConsensusOffer& region_offer = *rule[labels[i]];
+      float nearest_error = region_offer.max_depth;
       for (const ConsensusPlane& plane : planes[labels[i]]) {
         const float on_plane = DepthOnRay(plane.normal, plane.point, r);
         const float error = std::fabs(on_plane - depth) / depth;
@@ -192,7 +202,7 @@ ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
       core::OfferSegmentPlane(
           params, col, row,
           core::HypothesisOnPlane(params.ref_camera, col, row, nearest->normal, nearest->point),
-          offer.margin);
+          region_offer.margin);
       taken[row] += s.depth[i] != depth ? 1 : 0;
     }
   });

@@ -150,6 +150,23 @@ TEST(ConsensusPlanes, InAMaskRegionEveryWeaklyTexturedPixelTakesItsPlane) {
   EXPECT_GT(on_plane, 0.95 * band);
 }
 
+// A mask region that joins two surfaces (two planes among its confirmed
+// pixels) is not taken as one: its planes go only to the pixels within 3 %,
+// as a colour segment's, and the band 20 % off keeps its depth.
+TEST(ConsensusPlanes, AMaskRegionOfTwoPlanesIsOfferedAsAColourSegment) {
+  Fixture f = MakeFixture();
+  const core::PassParams& p = f.scene.params;
+  const std::vector<float> before(f.scene.state_depth);
+  const ConsensusPlanesReport r =
+      OfferConsensusPlanes(p, f.labels, f.evidence, kMaskRegionOffer, 2);
+  EXPECT_EQ(r.num_planes, 2);
+  for (int row = 0; row < p.state.height; row += 7) {
+    const int i = p.state.Index(75, row);
+    EXPECT_EQ(p.state.depth[i], before[i]);
+  }
+  EXPECT_LT(RelativeError(p, 30, kCreaseRow / 2), 0.005f);
+}
+
 // Sequential RANSAC: two planes with their shares of the points and outliers
 // scattered between them; the same key gives the same planes.
 TEST(ConsensusPlanes, FitsEachPlaneOnceAndIsDeterministic) {

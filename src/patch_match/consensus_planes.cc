@@ -1,6 +1,5 @@
 #include "patch_match/consensus_planes.h"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -9,6 +8,7 @@
 #include "core/math/rng.h"
 #include "core/patch_match/segment_plane.h"
 #include "core/patch_match/window_texture.h"
+#include "patch_match/segment_planes.h"
 
 namespace msp {
 namespace {
@@ -35,10 +35,7 @@ constexpr int kMinInliersFloor = 12;
 // Depth on `ray` (z = 1) of the plane through `point` with `normal`; 0 when
 // the ray misses it in front of the camera.
 float DepthOnRay(core::Vec3 normal, core::Vec3 point, core::Vec3 ray) {
-  const float denominator = core::Dot(normal, ray);
-  if (std::fabs(denominator) < 1e-12f) return 0.0f;
-  const float depth = core::Dot(normal, point) / denominator;
-  return depth > 0.0f ? depth : 0.0f;
+  return core::DepthOnRay(normal, -core::Dot(normal, point), ray);
 }
 
 bool OnPlane(core::Vec3 normal, core::Vec3 point, core::Vec3 X, core::Vec3 ray,
@@ -46,23 +43,13 @@ bool OnPlane(core::Vec3 normal, core::Vec3 point, core::Vec3 X, core::Vec3 ray,
   return std::fabs(DepthOnRay(normal, point, ray) - X.z) < tolerance * X.z;
 }
 
-// Least-squares plane: the centroid and the direction of least spread.
-ConsensusPlane Refit(const std::vector<core::Vec3>& points, const std::vector<size_t>& inliers) {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (size_t k : inliers) mean += Eigen::Vector3d(points[k].x, points[k].y, points[k].z);
-  mean /= static_cast<double>(inliers.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (size_t k : inliers) {
-    const Eigen::Vector3d d = Eigen::Vector3d(points[k].x, points[k].y, points[k].z) - mean;
-    cov += d * d.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
-  const Eigen::Vector3d n = solver.eigenvectors().col(0);  // smallest eigenvalue first
+// Least-squares plane of the points at `indices`, normal facing the camera.
+ConsensusPlane Refit(const std::vector<core::Vec3>& points, const std::vector<size_t>& indices) {
+  std::vector<core::Vec3> members;
+  members.reserve(indices.size());
+  for (size_t k : indices) members.push_back(points[k]);
   ConsensusPlane plane;
-  plane.point = core::Vec3{static_cast<float>(mean.x()), static_cast<float>(mean.y()),
-                           static_cast<float>(mean.z())};
-  plane.normal =
-      core::Vec3{static_cast<float>(n.x()), static_cast<float>(n.y()), static_cast<float>(n.z())};
+  LeastSquaresPlane(members, &plane.normal, &plane.point);
   if (core::Dot(plane.normal, plane.point) > 0.0f) plane.normal = -1.0f * plane.normal;
   return plane;
 }
@@ -145,8 +132,8 @@ ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
   }
   const int num_regions = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end());
   const auto ray = [&](int i) {
-    return core::BackProject(params.ref_camera, static_cast<float>(i % s.width),
-                             static_cast<float>(i / s.width), 1.0f);
+    return core::ViewRay(params.ref_camera, static_cast<float>(i % s.width),
+                         static_cast<float>(i / s.width));
   };
   // The confirmed pixels of every region, and its planes.
   std::vector<std::vector<int>> members(num_regions + 1);

@@ -113,22 +113,12 @@ std::vector<const SupportPoint*> Inliers(const core::PassParams& p, float focal_
   return inliers;
 }
 
-// Least-squares plane of the inliers: their centroid and the direction of least spread.
+// Least-squares plane of the inliers.
 void RefitPlane(const std::vector<const SupportPoint*>& inliers, SegmentPlane* plane) {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const SupportPoint* s : inliers) mean += Eigen::Vector3d(s->X.x, s->X.y, s->X.z);
-  mean /= static_cast<double>(inliers.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const SupportPoint* s : inliers) {
-    const Eigen::Vector3d d = Eigen::Vector3d(s->X.x, s->X.y, s->X.z) - mean;
-    cov += d * d.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
-  const Eigen::Vector3d n = solver.eigenvectors().col(0);  // smallest eigenvalue first
-  plane->normal =
-      core::Vec3{static_cast<float>(n.x()), static_cast<float>(n.y()), static_cast<float>(n.z())};
-  plane->point = core::Vec3{static_cast<float>(mean.x()), static_cast<float>(mean.y()),
-                            static_cast<float>(mean.z())};
+  std::vector<core::Vec3> points;
+  points.reserve(inliers.size());
+  for (const SupportPoint* s : inliers) points.push_back(s->X);
+  LeastSquaresPlane(points, &plane->normal, &plane->point);
 }
 
 // Whether inliers at `positions` span two image directions of a segment
@@ -318,6 +308,24 @@ void ConfirmSegmentPlanes(const core::PassParams& params, const std::vector<int3
       plane.accepted = false;
     }
   }
+}
+
+void LeastSquaresPlane(const std::vector<core::Vec3>& points, core::Vec3* normal,
+                       core::Vec3* point) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const core::Vec3& X : points) mean += Eigen::Vector3d(X.x, X.y, X.z);
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const core::Vec3& X : points) {
+    const Eigen::Vector3d d = Eigen::Vector3d(X.x, X.y, X.z) - mean;
+    cov += d * d.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
+  const Eigen::Vector3d n = solver.eigenvectors().col(0);  // smallest eigenvalue first
+  *normal =
+      core::Vec3{static_cast<float>(n.x()), static_cast<float>(n.y()), static_cast<float>(n.z())};
+  *point = core::Vec3{static_cast<float>(mean.x()), static_cast<float>(mean.y()),
+                      static_cast<float>(mean.z())};
 }
 
 bool OfferPlane(const core::PassParams& params, int col, int row, core::Vec3 normal,

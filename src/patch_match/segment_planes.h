@@ -63,6 +63,11 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
                                            const std::vector<uint8_t>& reliable, uint64_t key,
                                            bool own_support = true);
 
+// Least-squares plane of `points` (at least 3, camera frame): their centroid
+// `point` and the direction of least spread `normal` (unit, either sign).
+void LeastSquaresPlane(const std::vector<core::Vec3>& points, core::Vec3* normal,
+                       core::Vec3* point);
+
 // Offers pixel (col, row) the plane through `point` with `normal` (camera
 // frame) under the segment planes' rule (core::OfferSegmentPlane): a weakly
 // textured pixel takes it unless it costs 0.1 more than its own plane (the

@@ -24,13 +24,18 @@ MSP_HD float PlaneDistance(const Camera& cam, int col, int row, const PlaneHypot
               BackProject(cam, static_cast<float>(col), static_cast<float>(row), h.depth));
 }
 
-// Depth (camera z) where the ray of pixel (col, row) meets the plane n^T X + dist = 0.
+// Depth (camera z) where `ray` (z = 1, as ViewRay) meets the plane n^T X + dist = 0.
 // Returns 0 when the ray is parallel to the plane or hits it behind the camera.
-MSP_HD float DepthOnPlane(const Camera& cam, Vec3 normal, float dist, float col, float row) {
-  const float denom = Dot(normal, ViewRay(cam, col, row));
+MSP_HD float DepthOnRay(Vec3 normal, float dist, Vec3 ray) {
+  const float denom = Dot(normal, ray);
   if (fabsf(denom) < 1e-12f) return 0.0f;
   const float depth = -dist / denom;
   return depth > 0.0f ? depth : 0.0f;
+}
+
+// The same on the ray of pixel (col, row).
+MSP_HD float DepthOnPlane(const Camera& cam, Vec3 normal, float dist, float col, float row) {
+  return DepthOnRay(normal, dist, ViewRay(cam, col, row));
 }
 
 // Depth at pixel q of the plane hypothesis h held by pixel p.

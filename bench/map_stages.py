@@ -13,6 +13,14 @@ no plane; open sky; removed by the filter's triangulation angle, its NCC, its
 reprojection error, or several tests. "right" means the depth before the
 filter is within --threshold (relative) of the ground truth.
 
+With --seen, two more surface kinds split the measured pixels by what the
+views can give: "seen" pixels are visible (in the image, not occluded by the
+ground truth's own surface) in at least --min_views other images at a
+triangulation angle of at least --min_angle degrees (the output filter's
+defaults: 2 views, 3 degrees), "unseen" the rest. The filter cannot keep an
+unseen pixel, so the seen share is the ceiling of what the filtered maps can
+reach (every other image counts as a source: an upper bound under __auto__).
+
 With --fused, a kept pixel whose depth no fused point reproduces (a point of
 fused.ply projecting within 1 pixel of it, depth within the threshold) counts
 as "dropped by fusion" (the sparse model is read through `colmap
@@ -38,7 +46,7 @@ from ply_stats import read_ply  # noqa: E402
 
 STAGES = ["kept", "no plane", "open sky", "filter: angle", "filter: NCC", "filter: geometric",
           "filter: several"]
-KINDS = ["all", "textured", "weak texture", "floor", "wall"]
+KINDS = ["all", "textured", "weak texture", "floor", "wall", "seen", "unseen"]
 
 
 def read_array(path):
@@ -108,6 +116,42 @@ def fused_depth_hits(points, camera, depth, threshold):
     return hits
 
 
+def seen_by_sources(name, cameras, gts, shape, min_angle):
+    """Per pixel of a map of `shape` (rows, cols), the number of other images
+    that see its ground-truth point unoccluded at a triangulation angle of at
+    least `min_angle` degrees (0 where the point is not measured)."""
+    K, R, t, w, h = cameras[name]
+    gt = gts[name]
+    rows, cols = np.mgrid[0:shape[0], 0:shape[1]]
+    depth = gt[np.ix_(nearest_gt(shape[0], gt.shape[0]), nearest_gt(shape[1], gt.shape[1]))]
+    measured = depth > 0
+    x = ((cols[measured] + 0.5) * w / shape[1] - K[0, 2]) / K[0, 0]
+    y = ((rows[measured] + 0.5) * h / shape[0] - K[1, 2]) / K[1, 1]
+    world = (np.stack([x, y, np.ones_like(x)], -1) * depth[measured][:, None] - t) @ R
+    to_ref = -R.T @ t - world
+    to_ref /= np.linalg.norm(to_ref, axis=1, keepdims=True)
+    count = np.zeros(len(world), int)
+    for other, (Ks, Rs, ts, ws, hs) in cameras.items():
+        if other == name or other not in gts:
+            continue
+        X = world @ Rs.T + ts
+        z = np.maximum(X[:, 2], 1e-9)
+        g = gts[other]
+        u = np.floor((Ks[0, 0] * X[:, 0] / z + Ks[0, 2]) * g.shape[1] / ws).astype(int)
+        v = np.floor((Ks[1, 1] * X[:, 1] / z + Ks[1, 2]) * g.shape[0] / hs).astype(int)
+        inside = (X[:, 2] > 0) & (u >= 0) & (v >= 0) & (u < g.shape[1]) & (v < g.shape[0])
+        there = g[np.clip(v, 0, g.shape[0] - 1), np.clip(u, 0, g.shape[1] - 1)]
+        # Unmeasured there (a sensor hole) counts as seen: an upper bound.
+        visible = inside & ((there <= 0) | (np.abs(there - z) <= 0.05 * z))
+        to_other = -Rs.T @ ts - world
+        to_other /= np.linalg.norm(to_other, axis=1, keepdims=True)
+        angle = np.degrees(np.arccos(np.clip(np.sum(to_ref * to_other, axis=1), -1.0, 1.0)))
+        count += visible & (angle >= min_angle)
+    out = np.zeros(shape, int)
+    out[measured] = count
+    return out
+
+
 def nearest_gt(size, gt_size):
     return np.minimum(np.round(np.arange(size) * gt_size / size).astype(int), gt_size - 1)
 
@@ -117,13 +161,19 @@ def main():
     parser.add_argument("workspace")
     parser.add_argument("--fused")
     parser.add_argument("--threshold", type=float, default=0.05)
+    parser.add_argument("--seen", action="store_true",
+                        help="split by what --min_views other images see at --min_angle")
+    parser.add_argument("--min_views", type=int, default=2)
+    parser.add_argument("--min_angle", type=float, default=3.0)
     parser.add_argument("--json")
     args = parser.parse_args()
     ws = args.workspace
     gt_dir = os.path.join(ws, "ground_truth")
     names = [l.strip() for l in open(os.path.join(gt_dir, "images.txt")) if l.strip()]
     points = read_ply(args.fused)[0] if args.fused else None
-    cameras = read_cameras(ws) if args.fused else None
+    cameras = read_cameras(ws) if args.fused or args.seen else None
+    gts = {n: read_array(os.path.join(gt_dir, "depth_maps", n + ".bin"))[:, :, 0]
+           for n in names} if args.seen else None
     map_type = "geometric"
     # totals[kind][stage] = [pixels, right]
     totals = {k: np.zeros((len(STAGES) + 1, 2)) for k in KINDS}
@@ -152,6 +202,10 @@ def main():
             kinds["floor"] = measured & (n[:, :, 1] < -np.cos(np.radians(40)))
             kinds["wall"] = measured & (np.abs(n[:, :, 1]) < np.sin(np.radians(30))) & (
                 np.linalg.norm(n, axis=2) > 0.5)
+        if args.seen:
+            seen = seen_by_sources(name, cameras, gts, code.shape, args.min_angle) >= args.min_views
+            kinds["seen"] = measured & seen
+            kinds["unseen"] = measured & ~seen
         fused_lost = np.zeros(code.shape, bool)
         if points is not None:
             final = read_array(os.path.join(ws, "stereo", "depth_maps",
@@ -188,6 +242,11 @@ def main():
             all_px = totals[k][:len(STAGES), 0].sum()
             cells.append("%s / %s" % (pct(totals[k][s, 0], all_px), pct(totals[k][s, 1], all_px)))
         print("| %s | %s |" % (label, " | ".join(cells)))
+    if args.seen:
+        seen, measured = totals["seen"][:len(STAGES), 0].sum(), totals["all"][:len(STAGES), 0].sum()
+        print("\nSeen by >= %d other images at >= %g degrees (ground truth): %s %% of the measured "
+              "pixels, the ceiling of the filtered maps" % (args.min_views, args.min_angle,
+                                                            pct(seen, measured)))
     print("\nPer image (all measured pixels): kept / kept and right / right before the filter / "
           "no plane / filter (angle, NCC, geometric, several) / open sky, %")
     for r in per_image:

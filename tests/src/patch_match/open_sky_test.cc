@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/math/homography.h"
 #include "core/patch_match/segment_plane.h"
 #include "core/patch_match/window_texture.h"
 #include "tests/support/cameras.h"
@@ -52,7 +53,10 @@ struct StripsOf {
   std::vector<uint32_t> mask = std::vector<uint32_t>(kWidth * kHeight, 0u);
   // RGB planes: a neutral white everywhere.
   DenseMap color = DenseMap(kWidth, kHeight, 3);
-  core::PassParams params;
+  core::PassParams params{};
+  // Source views (none unless a test adds them): cameras and grey images.
+  std::vector<core::Camera> source_cameras;
+  std::vector<std::vector<float>> source_images;
 
   StripsOf() {
     for (int i = 0; i < kWidth * kHeight; ++i) normal[2 * kWidth * kHeight + i] = -1.0f;
@@ -113,7 +117,14 @@ struct StripsOf {
     params.ref_image = core::ImageView{grey.data(), kWidth, kHeight, kWidth};
     params.ncc.window_radius = 2;
     params.ncc.window_step = 1;
-    params.num_src = 0;  // no views: no texture is found at infinity
+    params.ncc.bilateral = 0;  // uniform window weights
+    params.num_src = static_cast<int>(source_cameras.size());  // none: nothing is at infinity
+    for (int j = 0; j < params.num_src; ++j) {
+      params.src[j].camera = source_cameras[j];
+      params.src[j].rel = core::ComputeRelativePose(params.ref_camera, source_cameras[j]);
+      params.src[j].image = core::ImageView{source_images[j].data(), kWidth, kHeight, kWidth};
+      params.src[j].depth = core::ImageView{nullptr, 0, 0, 0};
+    }
     params.depth_min = 1.0f;
     params.depth_max = 10.0f;
     return OpenSkyPixels(params, color, labels, planes, texture);
@@ -357,6 +368,39 @@ TEST(OpenSky, ASoftGradientIsNoTexture) {
   const std::vector<uint8_t> sky = s.Run();
   EXPECT_TRUE(s.Marked(sky, 1));
   EXPECT_TRUE(s.Marked(sky, 2));
+}
+
+// A cloud (texture at infinity) seen past a facade: the pixels hold the
+// plane z = 2 and selected view 1 only, where that plane lands on texture
+// alike (its image is the reference's shifted by the plane's disparity, 2
+// px); at infinity view 1 sees something else (the facade in front of the
+// cloud), view 0 the cloud as the reference does. The cloud's texture
+// matches at infinity in the best view: segment 3 fixes no depth. A
+// textured surface at the plane's depth, shifted so in both views, does not
+// match at infinity in either and keeps its depth.
+TEST(OpenSky, TextureAtInfinityInAnyViewFixesNoDepth) {
+  Strips s;
+  s.Texture(3);
+  s.Set(3, &s.mask, 2u);                                  // view 1
+  const float baseline = 4.0f / (0.9f * Strips::kWidth);  // 2 px at depth 2
+  // shifted(d)(col) = grey(col + d): the image of a camera `d` px of
+  // disparity to the right.
+  const auto shifted = [&](int d) {
+    std::vector<float> image(s.grey.size());
+    for (size_t i = 0; i < image.size(); ++i) {
+      const int col = static_cast<int>(i) % Strips::kWidth;
+      image[i] = s.grey[i - col + std::min(col + d, Strips::kWidth - 1)];
+    }
+    return image;
+  };
+  for (int j = 0; j < 2; ++j) {
+    s.source_cameras.push_back(
+        test::CentredCamera(Strips::kWidth, Strips::kHeight, core::Vec3{baseline, 0.0f, 0.0f}));
+  }
+  s.source_images = {s.grey, shifted(2)};
+  EXPECT_TRUE(s.Marked(s.Run(), 3));
+  s.source_images = {shifted(2), shifted(2)};
+  EXPECT_TRUE(s.Untouched(s.Run(), 3));
 }
 
 TEST(OpenSky, NothingMarkedGivesAnEmptyMask) {

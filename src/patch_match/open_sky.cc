@@ -84,6 +84,9 @@ constexpr double kMinRampFreeTexture = 0.5 * core::kTexturedWindowStd;
 constexpr float kInfinityDepth = 1000.0f;
 constexpr float kInfinityMargin = 0.05f;
 constexpr size_t kInfinitySamples = 32;
+// A view tells infinity from a depth when the two land this many pixels
+// apart in it: a textured window misaligned so far no longer matches.
+constexpr float kMinInfinityParallax = 3.0f;
 
 struct SegmentStats {
   long pixels = 0;
@@ -232,41 +235,50 @@ float PhotometricCost(const core::PassParams& p, const core::RefWindow& w,
   return total > 0.0f ? sum / total : core::kMaxCost;
 }
 
-// Mean photometric cost at infinity of the best `count` views of all the
-// sources.
-float BestViewsAtInfinity(const core::PassParams& p, const core::RefWindow& w, int count) {
+// The lowest photometric cost at infinity of pixel (col, row)'s window over
+// the sources that can tell infinity from its depth: those where the two
+// land kMinInfinityParallax pixels or more apart (near the epipole of a
+// camera moving forward, or from a view at the same centre, every depth
+// matches as well as infinity). kMaxCost when none can.
+float BestParallaxViewAtInfinity(const core::PassParams& p, const core::RefWindow& w, float depth) {
   const core::PlaneHypothesis far{kInfinityDepth * p.depth_max, core::Vec3{0.0f, 0.0f, -1.0f}};
   const core::PreparedPlane plane = core::PreparePlane(p, w.col, w.row, far);
   if (!plane.valid) return core::kMaxCost;
-  float costs[core::kMaxSourceViews];
-  for (int j = 0; j < p.num_src; ++j) costs[j] = core::PhotometricViewCost(p, w, j, plane);
-  std::sort(costs, costs + p.num_src);
-  float sum = 0.0f;
-  for (int j = 0; j < count; ++j) sum += costs[j];
-  return sum / static_cast<float>(count);
+  const core::Vec3 pixel{static_cast<float>(w.col), static_cast<float>(w.row), 1.0f};
+  float best = core::kMaxCost;
+  for (int j = 0; j < p.num_src; ++j) {
+    const core::RelativePose& rel = p.src[j].rel;
+    const core::Vec3 at_infinity = core::Mul(rel.KRK, pixel);
+    const core::Vec3 at_depth = depth * at_infinity + rel.Kt;
+    if (!(at_infinity.z > 0.0f) || !(at_depth.z > 0.0f)) continue;
+    const float du = at_infinity.x / at_infinity.z - at_depth.x / at_depth.z;
+    const float dv = at_infinity.y / at_infinity.z - at_depth.y / at_depth.z;
+    if (du * du + dv * dv < kMinInfinityParallax * kMinInfinityParallax) continue;
+    best = std::min(best, core::PhotometricViewCost(p, w, j, plane));
+  }
+  return best;
 }
 
 // Whether pixel i's window matches at infinity about as well as on its own
 // plane (kInfinityDepth, kInfinityMargin): no evidence of a finite depth. Its
-// own plane is scored on the views it selected, infinity on the best as many
-// of all its sources: a distant background seen past near surfaces matches
-// at infinity only in the views where nothing covers it, and the selection
-// of a plane carried into it picks the views where that plane lands on
-// texture alike (a soft cloud in the street scene matched a facade's depth
-// in the one view it selected at cost 0.01-0.05, and infinity there at
-// 0.6-1.2, the cloud hidden behind the facade in that view).
+// own plane is scored on the views it selected, infinity on the best view of
+// all its sources that can tell (BestParallaxViewAtInfinity): a distant
+// background seen past near surfaces matches at infinity only in the views
+// where nothing covers it, and the plane carried into it from the surface
+// in front selects the views where that plane lands on alike texture (a
+// soft cloud in the street scene matched a facade's depth in the one view
+// it selected at cost 0.01-0.05, and infinity there at 0.6-1.2, the cloud
+// hidden behind the facade in that view).
 bool MatchesAtInfinity(const core::PassParams& p, int i) {
   const core::PixelStateView& s = p.state;
   if (p.num_src <= 0 || core::IsUnlit(p, i) || !(s.depth[i] > 0.0f)) return false;
   const int col = i % s.width, row = i / s.width;
   float weights[core::kMaxSourceViews];
   core::MaskWeights(p, s.mask[i], weights);
-  int selected = 0;
-  for (int j = 0; j < p.num_src; ++j) selected += weights[j] > 0.0f ? 1 : 0;
   core::RefWindow w;
   core::PrepareWindow(p, col, row, &w);
   const float own = PhotometricCost(p, w, s.Get(i), weights);
-  return BestViewsAtInfinity(p, w, std::max(selected, 1)) < own + kInfinityMargin;
+  return BestParallaxViewAtInfinity(p, w, s.depth[i]) < own + kInfinityMargin;
 }
 
 // Share of `pixels` (indices) that match at infinity, on up to

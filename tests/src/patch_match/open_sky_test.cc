@@ -117,7 +117,7 @@ struct StripsOf {
     params.ref_image = core::ImageView{grey.data(), kWidth, kHeight, kWidth};
     params.ncc.window_radius = 2;
     params.ncc.window_step = 1;
-    params.ncc.bilateral = 0;  // uniform window weights
+    params.ncc.bilateral = 0;                                  // uniform window weights
     params.num_src = static_cast<int>(source_cameras.size());  // none: nothing is at infinity
     for (int j = 0; j < params.num_src; ++j) {
       params.src[j].camera = source_cameras[j];
@@ -372,17 +372,20 @@ TEST(OpenSky, ASoftGradientIsNoTexture) {
 
 // A cloud (texture at infinity) seen past a facade: the pixels hold the
 // plane z = 2 and selected view 1 only, where that plane lands on texture
-// alike (its image is the reference's shifted by the plane's disparity, 2
+// alike (its image is the reference's shifted by the plane's disparity, 6
 // px); at infinity view 1 sees something else (the facade in front of the
 // cloud), view 0 the cloud as the reference does. The cloud's texture
-// matches at infinity in the best view: segment 3 fixes no depth. A
+// matches at infinity in a view that can tell: segment 3 fixes no depth. A
 // textured surface at the plane's depth, shifted so in both views, does not
-// match at infinity in either and keeps its depth.
-TEST(OpenSky, TextureAtInfinityInAnyViewFixesNoDepth) {
+// match at infinity in either and keeps its depth; nor does the cloud when
+// the view that matches it at infinity has no parallax (its centre is the
+// reference's: every depth lands where infinity does).
+TEST(OpenSky, TextureAtInfinityInAViewWithParallaxFixesNoDepth) {
   Strips s;
   s.Texture(3);
-  s.Set(3, &s.mask, 2u);                                  // view 1
-  const float baseline = 4.0f / (0.9f * Strips::kWidth);  // 2 px at depth 2
+  s.Set(3, &s.mask, 2u);         // view 1
+  const float disparity = 6.0f;  // at depth 2; the texture's period is 4 px
+  const float baseline = 2.0f * disparity / (0.9f * Strips::kWidth);
   // shifted(d)(col) = grey(col + d): the image of a camera `d` px of
   // disparity to the right.
   const auto shifted = [&](int d) {
@@ -393,13 +396,16 @@ TEST(OpenSky, TextureAtInfinityInAnyViewFixesNoDepth) {
     }
     return image;
   };
-  for (int j = 0; j < 2; ++j) {
-    s.source_cameras.push_back(
-        test::CentredCamera(Strips::kWidth, Strips::kHeight, core::Vec3{baseline, 0.0f, 0.0f}));
-  }
-  s.source_images = {s.grey, shifted(2)};
+  const auto camera = [](float x) {
+    return test::CentredCamera(Strips::kWidth, Strips::kHeight, core::Vec3{x, 0.0f, 0.0f});
+  };
+  s.source_cameras = {camera(baseline), camera(baseline)};
+  s.source_images = {s.grey, shifted(6)};
   EXPECT_TRUE(s.Marked(s.Run(), 3));
-  s.source_images = {shifted(2), shifted(2)};
+  s.source_images = {shifted(6), shifted(6)};
+  EXPECT_TRUE(s.Untouched(s.Run(), 3));
+  s.source_cameras = {camera(0.0f), camera(baseline)};
+  s.source_images = {s.grey, shifted(6)};
   EXPECT_TRUE(s.Untouched(s.Run(), 3));
 }
 

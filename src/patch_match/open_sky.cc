@@ -97,7 +97,7 @@ struct SegmentStats {
   long outline = 0;           // pixels of other segments 4-adjacent to it (counted per adjacency)
   long outline_on_plane = 0;  // of those, holding its plane
   long evidence = 0;  // matched edge pixels at or next to it (on its plane, when it has one)
-  long contour = 0;   // of those, on a textured surface (HasCrossTexture): not its evidence
+  long contour = 0;  // of those, a textured surface's contour (IsTexturedContour): not its evidence
   std::vector<int> own_evidence;  // the others' pixel indices
 };
 
@@ -219,6 +219,33 @@ bool HasCrossTexture(const core::PassParams& params, int col, int row) {
   return weaker >= kMinCrossGradient * kMinCrossGradient;
 }
 
+// Whether the edge pixel at (col, row) is the contour of a textured surface:
+// its window has texture in two directions (HasCrossTexture), or a window
+// beside it across the edge, on either side, does. Right on a
+// roofline the window is half blank sky, and the straight edge's gradients
+// outweigh the facade's texture in the other half (the street's brown facade
+// under clouds: about 200 such pixels along its top, more than a tenth of
+// the sky segment's outline); a crease between two blank surfaces has blank
+// windows on both sides.
+bool IsTexturedContour(const core::PassParams& params, int col, int row) {
+  if (HasCrossTexture(params, col, row)) return true;
+  const core::ImageView& image = params.ref_image;
+  const int l = std::max(col - 1, 0), r = std::min(col + 1, image.width - 1);
+  const int u = std::max(row - 1, 0), d = std::min(row + 1, image.height - 1);
+  const float gx = image.At(r, row) - image.At(l, row);
+  const float gy = image.At(col, d) - image.At(col, u);
+  const float length = std::sqrt(gx * gx + gy * gy);
+  if (!(length > 0.0f)) return false;
+  const float reach = static_cast<float>(params.ncc.window_radius + 1);
+  for (const float side : {-1.0f, 1.0f}) {
+    const int c = static_cast<int>(std::lround(col + side * reach * gx / length));
+    const int w = static_cast<int>(std::lround(row + side * reach * gy / length));
+    if (c < 0 || w < 0 || c >= image.width || w >= image.height) continue;
+    if (HasCrossTexture(params, c, w)) return true;
+  }
+  return false;
+}
+
 // Mean photometric cost of `h` over the views `weights` gives (no
 // geometric term: the other views' depth maps hold the planes propagated
 // into the sky too).
@@ -308,7 +335,7 @@ void CountEvidence(const core::PassParams& params, const std::vector<int32_t>& l
   for (int row = 0; row < s.height; ++row) {
     for (int col = 0; col < s.width; ++col) {
       if (!IsEvidence(params, textured, col, row)) continue;
-      const bool on_textured_surface = HasCrossTexture(params, col, row);
+      const bool on_textured_surface = IsTexturedContour(params, col, row);
       int ids[5];
       int num_ids = 0;
       const auto add = [&](int c, int r) {

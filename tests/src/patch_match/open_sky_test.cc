@@ -215,9 +215,12 @@ TEST(OpenSky, RegionBehindAnOccludingContourGetsNothing) {
 }
 
 // Right on the roofline of a facade whose texture is weak, the window is
-// half blank sky and its cross gradients are too (below the threshold); the
-// window beside it, on the facade, has them. The edge is the facade's
-// contour, no evidence for the blank region behind it, which is left empty.
+// half blank and its cross gradients are too (below the threshold); the
+// window beside it, on the facade, has them. In a sky's colour the edge is
+// the facade's roofline, no evidence for the region behind it, even with a
+// plane of its own through the edge: the region is left empty. In a wall's
+// colour it may be a floor's contact line with a textured object and stays
+// the region's evidence.
 TEST(OpenSky, RooflineOfAWeaklyTexturedFacadeIsItsContour) {
   Strips s;
   for (size_t i = 0; i < s.labels.size(); ++i) {
@@ -230,7 +233,11 @@ TEST(OpenSky, RooflineOfAWeaklyTexturedFacadeIsItsContour) {
     s.texture[i] = kTextured;
   }
   s.Edge(Strips::kStrip);
+  s.planes[1] = OwnPlane(Strips::kStrip - 0.5f);
+  s.SetColor(1, 0.55f, 0.7f, 0.9f);
   EXPECT_TRUE(s.Marked(s.Run(), 1));
+  s.SetColor(1, 0.9f, 0.9f, 0.9f);
+  EXPECT_TRUE(s.Untouched(s.Run(), 1));
 }
 
 // A blank wall framed by a crease (left) and a contact line (right) with

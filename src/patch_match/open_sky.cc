@@ -264,17 +264,17 @@ float PhotometricCost(const core::PassParams& p, const core::RefWindow& w,
   return total > 0.0f ? sum / total : core::kMaxCost;
 }
 
-// The lowest photometric cost at infinity of pixel (col, row)'s window over
-// the sources that can tell infinity from its depth: those where the two
+// Whether the window `w` matches at infinity with a photometric cost below
+// `limit` in a source that can tell infinity from `depth`: one where the two
 // land kMinInfinityParallax pixels or more apart (near the epipole of a
 // camera moving forward, or from a view at the same centre, every depth
-// matches as well as infinity). kMaxCost when none can.
-float BestParallaxViewAtInfinity(const core::PassParams& p, const core::RefWindow& w, float depth) {
+// matches as well as infinity).
+bool MatchesAtInfinityInAView(const core::PassParams& p, const core::RefWindow& w, float depth,
+                              float limit) {
   const core::PlaneHypothesis far{kInfinityDepth * p.depth_max, core::Vec3{0.0f, 0.0f, -1.0f}};
   const core::PreparedPlane plane = core::PreparePlane(p, w.col, w.row, far);
-  if (!plane.valid) return core::kMaxCost;
+  if (!plane.valid) return false;
   const core::Vec3 pixel{static_cast<float>(w.col), static_cast<float>(w.row), 1.0f};
-  float best = core::kMaxCost;
   for (int j = 0; j < p.num_src; ++j) {
     const core::RelativePose& rel = p.src[j].rel;
     const core::Vec3 at_infinity = core::Mul(rel.KRK, pixel);
@@ -283,15 +283,15 @@ float BestParallaxViewAtInfinity(const core::PassParams& p, const core::RefWindo
     const float du = at_infinity.x / at_infinity.z - at_depth.x / at_depth.z;
     const float dv = at_infinity.y / at_infinity.z - at_depth.y / at_depth.z;
     if (du * du + dv * dv < kMinInfinityParallax * kMinInfinityParallax) continue;
-    best = std::min(best, core::PhotometricViewCost(p, w, j, plane));
+    if (core::PhotometricViewCost(p, w, j, plane) < limit) return true;
   }
-  return best;
+  return false;
 }
 
 // Whether pixel i's window matches at infinity about as well as on its own
 // plane (kInfinityDepth, kInfinityMargin): no evidence of a finite depth. Its
-// own plane is scored on the views it selected, infinity on the best view of
-// all its sources that can tell (BestParallaxViewAtInfinity): a distant
+// own plane is scored on the views it selected, infinity on each of its
+// sources that can tell (MatchesAtInfinityInAView): a distant
 // background seen past near surfaces matches at infinity only in the views
 // where nothing covers it, and the plane carried into it from the surface
 // in front selects the views where that plane lands on alike texture (a
@@ -307,7 +307,7 @@ bool MatchesAtInfinity(const core::PassParams& p, int i) {
   core::RefWindow w;
   core::PrepareWindow(p, col, row, &w);
   const float own = PhotometricCost(p, w, s.Get(i), weights);
-  return BestParallaxViewAtInfinity(p, w, s.depth[i]) < own + kInfinityMargin;
+  return MatchesAtInfinityInAView(p, w, s.depth[i], own + kInfinityMargin);
 }
 
 // Share of `pixels` (indices) that match at infinity, on up to

@@ -324,11 +324,12 @@ double ShareAtInfinity(const core::PassParams& p, const std::vector<int>& pixels
 
 // Gathers, for the untextured segments (`candidate`), their own evidence:
 // the evidence pixels at them or 4-adjacent to them (on their plane, for a
-// segment with an accepted one) that are not on a textured surface. An edge between a textured
-// surface and an untextured region is the textured surface's: its texture fixes its depth there, on
-// both sides of the edge, whether the untextured region meets it at a crease or lies far behind it
-// (an occluding contour); the images cannot tell which, so the edge is evidence for the textured
-// side only.
+// segment with an accepted one) that are not on a textured surface. An edge
+// between a textured surface and an untextured region is the textured
+// surface's: its texture fixes its depth there, on both sides of the edge,
+// whether the untextured region meets it at a crease or lies far behind it
+// (an occluding contour); the images cannot tell which, so the edge is
+// evidence for the textured side only.
 void CountEvidence(const core::PassParams& params, const std::vector<int32_t>& labels,
                    const std::vector<SegmentPlane>& planes, const std::vector<uint8_t>& candidate,
                    const std::vector<uint8_t>& textured, std::vector<SegmentStats>* stats) {
@@ -336,7 +337,7 @@ void CountEvidence(const core::PassParams& params, const std::vector<int32_t>& l
   for (int row = 0; row < s.height; ++row) {
     for (int col = 0; col < s.width; ++col) {
       if (!IsEvidence(params, textured, col, row)) continue;
-      if (HasCrossTexture(params, col, row)) continue;  // a textured surface's
+      if (HasCrossTexture(params, col, row)) continue;  // a textured surface's contour
       const bool beside_texture = TexturedBeside(params, col, row);
       int ids[5];
       int num_ids = 0;

@@ -23,8 +23,8 @@ reach (every other image counts as a source: an upper bound under __auto__).
 
 With --fused, a kept pixel whose depth no fused point reproduces (a point of
 fused.ply projecting within 1 pixel of it, depth within the threshold) counts
-as "dropped by fusion" (the sparse model is read through `colmap
-model_converter`, so colmap must be on PATH).
+as "dropped by fusion". With --fused or --seen the sparse model is read
+through `colmap model_converter` ($COLMAP, or colmap on PATH).
 
 Surface kinds from the ground truth: textured / weak texture (its textureless
 masks), and, from its normals in the camera frame of an upright camera, floor
@@ -69,7 +69,7 @@ def qvec_to_rotation(q):
 def read_cameras(workspace):
     """{image name: (K, R, t, width, height)} of the workspace's sparse model."""
     with tempfile.TemporaryDirectory() as tmp:
-        subprocess.run(["colmap", "model_converter", "--input_path",
+        subprocess.run([os.environ.get("COLMAP", "colmap"), "model_converter", "--input_path",
                         os.path.join(workspace, "sparse"), "--output_path", tmp,
                         "--output_type", "TXT"], check=True, stdout=subprocess.DEVNULL)
         cams = {}

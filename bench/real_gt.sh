@@ -4,7 +4,9 @@
 # corridor's walls, doors, sofa and cabinet), then per row runs msp_stereo on
 # a fresh copy of the workspace, fuses with COLMAP (geometric) and evaluates
 # against the sensor depth, and prints one Markdown table: map figures over
-# the measured pixels (within 5 % / 1 %, textureless ones within 5 %), fused
+# the measured pixels (within 5 % / 1 %, textureless ones within 5 %, and of
+# those two other frames see at the filter's angle, bench/map_stages.py
+# --seen, the share right before the filter and kept right), fused
 # accuracy / completeness / F1 at 5 cm and 2 cm, and time per frame. Then,
 # unless --no_bundled, the bundled scene at 640x480 with the default options
 # in the same sitting, for its time per image.
@@ -81,22 +83,31 @@ done
 echo
 echo "msp_stereo options of every row: ${common[*]+${common[*]}}"
 echo
-printf '| row | wall s | CPU-s | wall s / frame | maps within 5 %% / 1 %% | valid %% | textureless within 5 %% | fused points (judged) | acc. / comp. / F1 at 5 cm | F1 at 5 cm, >= 3 views | acc. / comp. / F1 at 2 cm |\n'
-printf '|---|---|---|---|---|---|---|---|---|---|---|\n'
+printf '| row | wall s | CPU-s | wall s / frame | maps within 5 %% / 1 %% | valid %% | textureless within 5 %% | seen: right before the filter / kept and right %% | fused points (judged) | acc. / comp. / F1 at 5 cm | F1 at 5 cm, >= 3 views | acc. / comp. / F1 at 2 cm |\n'
+printf '|---|---|---|---|---|---|---|---|---|---|---|---|\n'
 n=0
 for plan in "${plans[@]}"; do
   n=$((n + 1))
   plan_fields "$plan"
   echo "row $n/${#plans[@]} ($id): msp_stereo ${common[*]+${common[*]}} ${options[*]+${options[*]}}" >&2
   run_row ${common[@]+"${common[@]}"} ${options[@]+"${options[@]}"} --MspStereo.write_previews 1
+  COLMAP="$colmap" run_logged "$scratch/stages.log" /usr/bin/python3 "$root/bench/map_stages.py" \
+    "$scratch/ws" --seen --json "$scratch/stages.json"
   if [ -n "$keep" ]; then
     cp -r "$scratch/ws/stereo" "$keep/$id"
     cp "$scratch/ws/fused.ply" "$scratch/eval.json" "$scratch/stereo.log" "$keep/$id/"
   fi
   read -r wall user < "$scratch/time"
-  /usr/bin/python3 - "$scratch/eval.json" "$label" "$wall" "$user" "$num_frames" <<'PY'
+  /usr/bin/python3 - "$scratch/eval.json" "$label" "$wall" "$user" "$num_frames" \
+    "$scratch/stages.json" <<'PY'
 import json, sys
 e = json.load(open(sys.argv[1]))
+# Of the pixels two other frames see at the filter's angle (map_stages.py
+# --seen): right before the filter, and kept right (stage 0, "kept").
+seen = json.load(open(sys.argv[6]))["totals"]["seen"]
+seen_pixels = sum(s[0] for s in seen[:-1])
+seen_cell = "%.1f / %.1f" % (100.0 * sum(s[1] for s in seen[:-1]) / seen_pixels,
+                             100.0 * seen[0][1] / seen_pixels) if seen_pixels else "-"
 label, wall, user, frames = sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), int(sys.argv[5])
 pct = lambda v: "%.1f" % (100.0 * v)
 a = e["average"]
@@ -108,7 +119,7 @@ print("| " + " | ".join([
     label, "%.0f" % wall, "%.0f" % user, "%.1f" % (wall / frames),
     "%s / %s" % (pct(a["all"]["complete_2"]), pct(a["all"]["complete_1"])),
     pct(a["all"]["valid_fraction"]),
-    pct(tl["complete_2"]) if tl is not None else "-",
+    pct(tl["complete_2"]) if tl is not None else "-", seen_cell,
     "%d (%d)" % (f["num_points"], f["num_judged"]),
     cloud(absolute[0.05]), pct(absolute[0.05]["f1_multi"]), cloud(absolute[0.02])]) + " |")
 PY
@@ -118,7 +129,9 @@ echo "Maps: mean over frames of the share of measured pixels within 5 % / 1 % re
 echo "(pixels without a sensor measurement count neither way); valid = measured pixels with a depth."
 echo "Fused: accuracy over the points some frame measured, completeness over the sensor's surface"
 echo "sample ($num_frames frames, 5 mm voxels), F1 of both; >= 3 views: completeness over the samples"
-echo "three or more frames measured, what COLMAP's default fusion can reach."
+echo "three or more frames measured, what COLMAP's default fusion can reach. Seen: the measured"
+echo "pixels that two other frames see, unoccluded, at a triangulation angle of 3 degrees or more"
+echo "(bench/map_stages.py --seen), the most the filtered maps can keep; within 5 %."
 
 if [ "$bundled" = 1 ]; then
   echo "bundled scene at 640x480 (default options), same sitting" >&2

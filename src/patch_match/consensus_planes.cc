@@ -186,11 +186,8 @@ ConsensusPlanesReport OfferConsensusPlanes(const core::PassParams& params,
       }
       if (nearest == nullptr) continue;
       ++offered[row];
-      core::OfferSegmentPlane(
-          params, col, row,
-          core::HypothesisOnPlane(params.ref_camera, col, row, nearest->normal, nearest->point),
-          region_offer.margin);
-      taken[row] += s.depth[i] != depth ? 1 : 0;
+      taken[row] +=
+          OfferPlane(params, col, row, nearest->normal, nearest->point, region_offer.margin);
     }
   });
   for (int row = 0; row < s.height; ++row) {

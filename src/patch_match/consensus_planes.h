@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/patch_match/patch_match_kernel.h"
+#include "patch_match/segment_planes.h"
 
 namespace msp {
 
@@ -56,7 +57,7 @@ struct ConsensusOffer {
 // pixels already on its surface, with noise (with 5 % the bundled scene's
 // textureless pixels within 5 % fell by 1.7 points: a wrong plane that the
 // views agree on reached further), under the segment planes' margin.
-constexpr ConsensusOffer kSegmentOffer{0.03f, 0.1f, false};
+constexpr ConsensusOffer kSegmentOffer{0.03f, kTexturelessMargin, false};
 // A region of the user's mask layers is meant to be one surface (what a
 // segmenter such as Semantic-SAM is for); where the views confirm that it is
 // one plane, every weakly textured pixel of it takes that plane, whatever its

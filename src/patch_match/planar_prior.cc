@@ -162,7 +162,7 @@ PlanarPriorReport OfferPriorPlanes(const core::PassParams& params,
       ++offered[row];
       const PriorTriangle& tri = triangles[owner[i]];
       taken[row] += OfferPlane(params, col, row, tri.normal, tri.point,
-                               core::IsWeaklyTextured(params, col, row));
+                               SegmentPlaneMargin(core::IsWeaklyTextured(params, col, row)));
     }
   });
   for (int row = 0; row < s.height; ++row) {

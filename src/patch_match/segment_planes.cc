@@ -46,9 +46,6 @@ constexpr float kMinInlierShare = 0.5f;
 // axis of their pixel positions at least this share of the segment's. Points
 // along one crease fit every plane through it.
 constexpr float kMinSpreadShare = 0.2f;
-// A textureless pixel takes its segment's plane unless that costs this much
-// more than its own (costs of noise-level windows differ by about this much).
-constexpr float kTexturelessMargin = 0.1f;
 // Confirmation by the other views: every 4th pixel of every 4th row is
 // enough to count a segment's agreement; a source confirms a depth that it
 // brings back within 1 px (the final filter's geometric tolerance).
@@ -329,11 +326,11 @@ void LeastSquaresPlane(const std::vector<core::Vec3>& points, core::Vec3* normal
 }
 
 bool OfferPlane(const core::PassParams& params, int col, int row, core::Vec3 normal,
-                core::Vec3 point, bool weakly_textured) {
+                core::Vec3 point, float margin) {
   const core::PlaneHypothesis candidate =
       core::HypothesisOnPlane(params.ref_camera, col, row, normal, point);
   const float before = params.state.depth[params.state.Index(col, row)];
-  core::OfferSegmentPlane(params, col, row, candidate, weakly_textured ? kTexturelessMargin : 0.0f);
+  core::OfferSegmentPlane(params, col, row, candidate, margin);
   return params.state.depth[params.state.Index(col, row)] != before;
 }
 
@@ -377,7 +374,7 @@ SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
       if (!plane.accepted) continue;
       ++offered[row];
       taken[row] += OfferPlane(params, col, row, plane.normal, plane.point,
-                               texture[i] < core::kTexturedWindowStd);
+                               SegmentPlaneMargin(texture[i] < core::kTexturedWindowStd));
     }
   });
   for (int row = 0; row < s.height; ++row) {

@@ -68,13 +68,21 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
 void LeastSquaresPlane(const std::vector<core::Vec3>& points, core::Vec3* normal,
                        core::Vec3* point);
 
+// A textureless pixel takes its segment's plane unless that costs this much
+// more than its own (costs of noise-level windows differ by about this much).
+constexpr float kTexturelessMargin = 0.1f;
+
 // Offers pixel (col, row) the plane through `point` with `normal` (camera
-// frame) under the segment planes' rule (core::OfferSegmentPlane): a weakly
-// textured pixel takes it unless it costs 0.1 more than its own plane (the
-// spread of noise-level costs), a textured one only when it is cheaper. True
-// when the pixel took it.
+// frame) under the segment planes' rule (core::OfferSegmentPlane): the pixel
+// takes it unless it costs `margin` more than its own plane. True when the
+// pixel took it.
 bool OfferPlane(const core::PassParams& params, int col, int row, core::Vec3 normal,
-                core::Vec3 point, bool weakly_textured);
+                core::Vec3 point, float margin);
+// The segment planes' margin: kTexturelessMargin for a weakly textured
+// pixel, 0 for a textured one (it takes only a cheaper plane).
+inline float SegmentPlaneMargin(bool weakly_textured) {
+  return weakly_textured ? kTexturelessMargin : 0.0f;
+}
 
 // The colour segments of segment planes: `color` (the reference image at the
 // pass's level, RGB planes) cut by `segmenter`, ids 1..K. The same for every

@@ -259,11 +259,12 @@ void DefineMspStereoCommonOptions(MspStereoOptions* m, OptionVisitor* t) {
                  "back, keep the triangles inside one colour segment, and offer each triangle's "
                  "plane to the unconfirmed pixels within it (a planar prior after ACMP; "
                  "docs/method.md section 2.12).");
-  MSP_ADD_OPTION(t, *m, consensus_planes,
-                 "In geometric passes, fit planes to each colour segment's pixels that the other "
-                 "views confirm, and offer the nearest to each weakly textured pixel of the segment "
-                 "whose depth lies within 3 % of one: thousands of confirmed depths averaged into "
-                 "one surface (docs/method.md section 2.13).");
+  MSP_ADD_OPTION(
+      t, *m, consensus_planes,
+      "In geometric passes, fit planes to each colour segment's pixels that the other "
+      "views confirm, and offer the nearest to each weakly textured pixel of the segment "
+      "whose depth lies within 3 % of one: thousands of confirmed depths averaged into "
+      "one surface (docs/method.md section 2.13).");
   MSP_ADD_OPTION(t, *m, depth_range_from_sources,
                  "Depth range of each reference image (unless --PatchMatchStereo.depth_min/max "
                  "are given) from the sparse points it or any of its sources observes in front of "
@@ -296,8 +297,9 @@ void DefineMspStereoCommonOptions(MspStereoOptions* m, OptionVisitor* t) {
                      ", else the embedded segmenter): after each deformable pass its depth edges "
                      "are recomputed, and later passes take no anchor across them; needs " +
                      MSP_OPTION_FLAG(*m, deformable) +
-                     ". Mask files given, their finest layer also bounds the consensus planes "
-                     "(docs/method.md section 2.13), with or without deformable patches. false = "
+                     ". Mask files given, their finest layer also bounds the segment planes and "
+                     "the consensus planes (docs/method.md sections 2.10, 2.13), with or without "
+                     "deformable patches. false = "
                      "w/o Mul. (APD-MVS), and mask files are not read.");
   MSP_ADD_OPTION(t, *m, edge_aggregation,
                  "Aggregate the mask layers per region by their best anchor subsets (eqs. 4-5); "

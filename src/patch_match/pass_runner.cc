@@ -469,8 +469,14 @@ class PassRunner {
     rules.own_support = msp_.segment_plane_own_support;
     rules.confirm = msp_.segment_plane_confirmation;
     rules.open_sky = msp_.open_sky;
-    const SegmentPlanesReport r = ApplySegmentPlanes(
-        params, state->segments, threads_, rules, &level_->color.at(problem.ref), &state->open_sky);
+    // The user's finest mask layer, when given, cuts the colour segments at
+    // its regions' edges: a plane reaches no further than the surface.
+    const std::vector<int32_t> regions = MaskRegions(problem.ref, params);
+    const std::vector<int32_t> bounded =
+        regions.empty() ? std::vector<int32_t>() : SegmentsWithinRegions(state->segments, regions);
+    const SegmentPlanesReport r =
+        ApplySegmentPlanes(params, regions.empty() ? state->segments : bounded, threads_, rules,
+                           &level_->color.at(problem.ref), &state->open_sky);
     const double pixels = params.state.width * params.state.height;
     Logf(kLogDetail,
          "  segment planes: %d of %d segments, %.1f%% of pixels offered, %.1f%% took, %.1f%% "

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <unordered_map>
 #include <utility>
 
 #include "base/parallel_for.h"
@@ -249,6 +250,22 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
     plane.accepted = plane.num_own >= kMinInliers && Spans(own, spread[id]);
   }
   return planes;
+}
+
+std::vector<int32_t> SegmentsWithinRegions(const std::vector<int32_t>& segments,
+                                           const std::vector<int32_t>& regions) {
+  if (segments.size() != regions.size()) {
+    throw std::logic_error("segments and regions differ in size");
+  }
+  std::unordered_map<uint64_t, int32_t> ids;
+  std::vector<int32_t> out(segments.size(), 0);
+  for (size_t i = 0; i < segments.size(); ++i) {
+    if (segments[i] <= 0) continue;
+    const uint64_t key = (static_cast<uint64_t>(static_cast<uint32_t>(segments[i])) << 32) |
+                         static_cast<uint32_t>(regions[i]);
+    out[i] = ids.emplace(key, static_cast<int32_t>(ids.size()) + 1).first->second;
+  }
+  return out;
 }
 
 std::vector<int32_t> SegmentPlaneLabels(const DenseMap& color, Segmenter segmenter) {

@@ -63,6 +63,14 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
                                            const std::vector<uint8_t>& reliable, uint64_t key,
                                            bool own_support = true);
 
+// The segments of `segments` cut at the edges of `regions` (a label image of
+// the same size: the finest mask layer): pixels share a label when they share
+// both, ids 1..K in the order of their first pixel, 0 where `segments` is 0.
+// A colour segment that joins surfaces of one colour (a wall and the face of
+// a pillar before it) gets one plane per surface the regions tell apart.
+std::vector<int32_t> SegmentsWithinRegions(const std::vector<int32_t>& segments,
+                                           const std::vector<int32_t>& regions);
+
 // Least-squares plane of `points` (at least 3, camera frame): their centroid
 // `point` and the direction of least spread `normal` (unit, either sign).
 void LeastSquaresPlane(const std::vector<core::Vec3>& points, core::Vec3* normal,

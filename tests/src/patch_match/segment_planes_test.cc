@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "core/math/plane.h"
@@ -269,6 +270,61 @@ TEST(SegmentPlanes, NoSupportNoPlane) {
       FitSegmentPlanes(f.scene.params, f.labels, f.reliable, 7u);
   EXPECT_EQ(planes[1].num_support, 0);
   EXPECT_FALSE(planes[1].accepted);
+}
+
+TEST(SegmentPlanes, SegmentsWithinRegionsCutsSegmentsAtRegionEdges) {
+  // Colour segments 1 (left) and 2 (right), regions 7 (top) and 9 (bottom);
+  // 0 = no segment.
+  const std::vector<int32_t> segments = {1, 1, 2, 2, 0,  //
+                                         1, 1, 2, 2, 2};
+  const std::vector<int32_t> regions = {7, 7, 7, 9, 9,  //
+                                        9, 7, 7, 9, 9};
+  const std::vector<int32_t> expected = {1, 1, 2, 3, 0,  //
+                                         4, 1, 2, 3, 3};
+  EXPECT_EQ(SegmentsWithinRegions(segments, regions), expected);
+  EXPECT_THROW(SegmentsWithinRegions(segments, {1, 2}), std::logic_error);
+}
+
+// The face of a pillar before a wall, both of one colour: one colour segment,
+// whose densest support is the pillar's (its texture, at its depth), so the
+// segment's one plane is the pillar's and the wall would be offered it. Cut
+// at the regions of a segmentation that tells the two surfaces apart, the
+// wall gets the plane of its own creases.
+TEST(SegmentPlanes, RegionsGiveAWallBehindAPillarOfItsColourItsOwnPlane) {
+  Fixture f = MakeFixture(LShape, 0);  // the wall: the tilted plane, support on its creases
+  const core::PassParams& p = f.scene.params;
+  const core::PixelStateView& s = p.state;
+  const auto in_pillar = [](int col) { return col >= 20 && col < 60; };
+  constexpr float kPillarDepth = 1.5f;  // fronto-parallel, before the wall (about 2)
+  std::vector<int32_t> regions(f.labels.size());
+  for (int row = 0; row < s.height; ++row) {
+    for (int col = 0; col < s.width; ++col) {
+      const int i = s.Index(col, row);
+      regions[i] = in_pillar(col) ? 2 : 1;
+      if (!in_pillar(col)) continue;
+      f.reliable[i] = 1;
+      s.depth[i] = kPillarDepth;
+    }
+  }
+  const int col = 150, row = 75;  // a wall pixel
+  const float wall_depth = TiltedDepth(p.ref_camera, col, row);
+  const auto depth_on = [&](const SegmentPlane& plane) {
+    return core::HypothesisOnPlane(p.ref_camera, col, row, plane.normal, plane.point).depth;
+  };
+  const std::vector<SegmentPlane> joint = FitSegmentPlanes(p, f.labels, f.reliable, 7u);
+  ASSERT_EQ(joint.size(), 2u);
+  ASSERT_TRUE(joint[1].accepted);
+  EXPECT_NEAR(depth_on(joint[1]), kPillarDepth, 0.01f * kPillarDepth);
+
+  const std::vector<int32_t> cut = SegmentsWithinRegions(f.labels, regions);
+  const std::vector<SegmentPlane> planes = FitSegmentPlanes(p, cut, f.reliable, 7u);
+  ASSERT_EQ(planes.size(), 3u);  // the wall first (its pixel (0, 0) comes first), the pillar
+  ASSERT_TRUE(planes[1].accepted);
+  EXPECT_NEAR(depth_on(planes[1]), wall_depth, 0.01f * wall_depth);
+  ASSERT_TRUE(planes[2].accepted);
+  EXPECT_NEAR(
+      core::HypothesisOnPlane(p.ref_camera, 40, 75, planes[2].normal, planes[2].point).depth,
+      kPillarDepth, 0.01f * kPillarDepth);
 }
 
 // OfferSegmentPlane on a textureless plane: any plane costs the same (kMaxCost),

@@ -257,13 +257,37 @@ std::vector<int32_t> SegmentsWithinRegions(const std::vector<int32_t>& segments,
   if (segments.size() != regions.size()) {
     throw std::logic_error("segments and regions differ in size");
   }
+  const auto key = [](int32_t segment, int32_t region) {
+    return (static_cast<uint64_t>(static_cast<uint32_t>(segment)) << 32) |
+           static_cast<uint32_t>(region);
+  };
+  // Region 0 is unlabelled: no evidence for a cut. Its pixels stay with the
+  // segment's largest labelled piece (the smallest region id among equals).
+  std::unordered_map<uint64_t, int> piece_size;
+  for (size_t i = 0; i < segments.size(); ++i) {
+    if (segments[i] > 0 && regions[i] != 0) ++piece_size[key(segments[i], regions[i])];
+  }
+  std::unordered_map<int32_t, std::pair<int, int32_t>> largest;  // segment -> (size, region)
+  for (const auto& [k, size] : piece_size) {
+    const int32_t segment = static_cast<int32_t>(k >> 32);
+    const int32_t region = static_cast<int32_t>(static_cast<uint32_t>(k));
+    auto [it, added] = largest.emplace(segment, std::make_pair(size, region));
+    if (!added &&
+        (size > it->second.first || (size == it->second.first && region < it->second.second))) {
+      it->second = {size, region};
+    }
+  }
   std::unordered_map<uint64_t, int32_t> ids;
   std::vector<int32_t> out(segments.size(), 0);
   for (size_t i = 0; i < segments.size(); ++i) {
     if (segments[i] <= 0) continue;
-    const uint64_t key = (static_cast<uint64_t>(static_cast<uint32_t>(segments[i])) << 32) |
-                         static_cast<uint32_t>(regions[i]);
-    out[i] = ids.emplace(key, static_cast<int32_t>(ids.size()) + 1).first->second;
+    int32_t region = regions[i];
+    if (region == 0) {
+      const auto it = largest.find(segments[i]);
+      if (it != largest.end()) region = it->second.second;
+    }
+    out[i] =
+        ids.emplace(key(segments[i], region), static_cast<int32_t>(ids.size()) + 1).first->second;
   }
   return out;
 }

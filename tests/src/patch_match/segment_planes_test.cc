@@ -273,14 +273,16 @@ TEST(SegmentPlanes, NoSupportNoPlane) {
 }
 
 TEST(SegmentPlanes, SegmentsWithinRegionsCutsSegmentsAtRegionEdges) {
-  // Colour segments 1 (left) and 2 (right), regions 7 (top) and 9 (bottom);
-  // 0 = no segment.
-  const std::vector<int32_t> segments = {1, 1, 2, 2, 0,  //
-                                         1, 1, 2, 2, 2};
-  const std::vector<int32_t> regions = {7, 7, 7, 9, 9,  //
-                                        9, 7, 7, 9, 9};
-  const std::vector<int32_t> expected = {1, 1, 2, 3, 0,  //
-                                         4, 1, 2, 3, 3};
+  // Colour segments 1 (left), 2 (middle) and 3 (right), 0 = no segment;
+  // regions 7 and 9, 0 = unlabelled.
+  const std::vector<int32_t> segments = {1, 1, 2, 2, 0, 3,  //
+                                         1, 1, 2, 2, 2, 3};
+  const std::vector<int32_t> regions = {7, 7, 7, 9, 9, 0,  //
+                                        9, 0, 7, 9, 9, 0};
+  // Segment 1: its unlabelled pixel joins its larger piece (region 7);
+  // segment 3, all unlabelled, stays whole.
+  const std::vector<int32_t> expected = {1, 1, 2, 3, 0, 4,  //
+                                         5, 1, 2, 3, 3, 4};
   EXPECT_EQ(SegmentsWithinRegions(segments, regions), expected);
   EXPECT_THROW(SegmentsWithinRegions(segments, {1, 2}), std::logic_error);
 }

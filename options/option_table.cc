@@ -259,12 +259,11 @@ void DefineMspStereoCommonOptions(MspStereoOptions* m, OptionVisitor* t) {
                  "back, keep the triangles inside one colour segment, and offer each triangle's "
                  "plane to the unconfirmed pixels within it (a planar prior after ACMP; "
                  "docs/method.md section 2.12).");
-  MSP_ADD_OPTION(
-      t, *m, consensus_planes,
-      "In geometric passes, fit planes to each colour segment's pixels that the other "
-      "views confirm, and offer the nearest to each weakly textured pixel of the segment "
-      "whose depth lies within 3 % of one: thousands of confirmed depths averaged into "
-      "one surface (docs/method.md section 2.13).");
+  MSP_ADD_OPTION(t, *m, consensus_planes,
+                 "In geometric passes, fit planes to each colour segment's pixels that the other "
+                 "views confirm, and offer the nearest to each weakly textured pixel of the segment "
+                 "whose depth lies within 3 % of one: thousands of confirmed depths averaged into "
+                 "one surface (docs/method.md section 2.13).");
   MSP_ADD_OPTION(t, *m, depth_range_from_sources,
                  "Depth range of each reference image (unless --PatchMatchStereo.depth_min/max "
                  "are given) from the sparse points it or any of its sources observes in front of "

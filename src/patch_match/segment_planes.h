@@ -66,10 +66,10 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
 // The segments of `segments` cut at the edges of `regions` (a label image of
 // the same size: the finest mask layer): pixels share a label when they share
 // both, ids 1..K in the order of their first pixel, 0 where `segments` is 0.
+// A colour segment that joins surfaces of one colour (a wall and the face of
+// a pillar before it) so gets one plane per surface the regions tell apart.
 // Region 0 (unlabelled) cuts nothing: its pixels stay with their segment's
 // largest labelled piece.
-// A colour segment that joins surfaces of one colour (a wall and the face of
-// a pillar before it) gets one plane per surface the regions tell apart.
 std::vector<int32_t> SegmentsWithinRegions(const std::vector<int32_t>& segments,
                                            const std::vector<int32_t>& regions);
 

@@ -400,11 +400,15 @@ class PassRunner {
         engine_.LocalRefine(params);
       }
     });
+    // The finest mask layer at the pass's size (empty without mask files):
+    // it bounds the segment planes and the consensus planes.
+    const std::vector<int32_t> regions = MaskRegions(problem.ref, params);
     if (pass.segment_planes) {
-      Measured(pass, Step::kSegmentPlanes, [&] { RunSegmentPlanes(params, problem, &state); });
+      Measured(pass, Step::kSegmentPlanes,
+               [&] { RunSegmentPlanes(params, problem, regions, &state); });
     }
     if ((msp_.planar_prior || msp_.consensus_planes) && params.geometric) {
-      Measured(pass, Step::kPlanarPrior, [&] { RunPlanarPrior(params, problem, &state); });
+      Measured(pass, Step::kPlanarPrior, [&] { RunPlanarPrior(params, problem, regions, &state); });
     }
     if (pass.prior) Measured(pass, Step::kPrior, [&] { RunPrior(pass, problem, &state); });
     // Asked before the outputs are written: afterwards the image has them.
@@ -462,7 +466,9 @@ class PassRunner {
 
   // Segment planes of one image after a pass (docs/method.md section 2.10),
   // then how many segments had a plane and how many pixels took theirs.
-  void RunSegmentPlanes(const core::PassParams& params, const Problem& problem, PixelState* state) {
+  // `regions`: the finest mask layer (MaskRegions), or empty.
+  void RunSegmentPlanes(const core::PassParams& params, const Problem& problem,
+                        const std::vector<int32_t>& regions, PixelState* state) {
     const auto t0 = std::chrono::steady_clock::now();
     MakeSegments(problem, state);
     SegmentPlaneRules rules;
@@ -471,7 +477,6 @@ class PassRunner {
     rules.open_sky = msp_.open_sky;
     // The user's finest mask layer, when given, cuts the colour segments at
     // its regions' edges: a plane reaches no further than the surface.
-    const std::vector<int32_t> regions = MaskRegions(problem.ref, params);
     const std::vector<int32_t> bounded =
         regions.empty() ? std::vector<int32_t>() : SegmentsWithinRegions(state->segments, regions);
     const SegmentPlanesReport r =
@@ -576,8 +581,10 @@ class PassRunner {
 
   // Planar prior and consensus planes of one image after a geometric pass
   // (docs/method.md sections 2.12-2.13), bounded by the segment planes' colour
-  // segments; both build on the pixels the other views confirm.
-  void RunPlanarPrior(const core::PassParams& params, const Problem& problem, PixelState* state) {
+  // segments; both build on the pixels the other views confirm. `regions`:
+  // the finest mask layer (MaskRegions), or empty.
+  void RunPlanarPrior(const core::PassParams& params, const Problem& problem,
+                      const std::vector<int32_t>& regions, PixelState* state) {
     const auto t0 = std::chrono::steady_clock::now();
     MakeSegments(problem, state);
     const std::vector<uint8_t> evidence = ConfirmedPixels(params, OutputFilter(params), threads_);
@@ -593,7 +600,6 @@ class PassRunner {
     if (msp_.consensus_planes) {
       // The user's finest mask layer, when given, is the regions: one surface
       // each, whose weakly textured pixels all take the nearest of its planes.
-      const std::vector<int32_t> regions = MaskRegions(problem.ref, params);
       const ConsensusPlanesReport r =
           regions.empty()
               ? OfferConsensusPlanes(params, state->segments, evidence, kSegmentOffer, threads_)

@@ -258,11 +258,13 @@ void LoadViews(const std::vector<Problem>& problems, int max_image_size, size_t 
 
 // The segmentation prior's mask layers of every reference view, read at the
 // working resolution; views without mask files are left to the embedded
-// segmenter. The prior runs with deformable patches and bounds the segment
-// planes and the consensus planes, so nothing is read without one of them.
+// segmenter. The prior runs with deformable patches and bounds the matching
+// windows, the segment planes and the consensus planes, so nothing is read
+// without one of them.
 void LoadPriorMaskLayers(const StereoCommandOptions& options, Workspace* ws) {
   if (!options.msp.segmentation_prior ||
-      !(options.msp.deformable || options.msp.segment_planes || options.msp.consensus_planes)) {
+      !(options.msp.deformable || options.msp.region_windows || options.msp.segment_planes ||
+        options.msp.consensus_planes)) {
     return;
   }
   std::vector<int> refs;

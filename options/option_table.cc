@@ -259,11 +259,18 @@ void DefineMspStereoCommonOptions(MspStereoOptions* m, OptionVisitor* t) {
                  "back, keep the triangles inside one colour segment, and offer each triangle's "
                  "plane to the unconfirmed pixels within it (a planar prior after ACMP; "
                  "docs/method.md section 2.12).");
-  MSP_ADD_OPTION(t, *m, consensus_planes,
-                 "In geometric passes, fit planes to each colour segment's pixels that the other "
-                 "views confirm, and offer the nearest to each weakly textured pixel of the segment "
-                 "whose depth lies within 3 % of one: thousands of confirmed depths averaged into "
-                 "one surface (docs/method.md section 2.13).");
+  MSP_ADD_OPTION(
+      t, *m, consensus_planes,
+      "In geometric passes, fit planes to each colour segment's pixels that the other "
+      "views confirm, and offer the nearest to each weakly textured pixel of the segment "
+      "whose depth lies within 3 % of one: thousands of confirmed depths averaged into "
+      "one surface (docs/method.md section 2.13).");
+  MSP_ADD_OPTION(t, *m, region_windows,
+                 "Mask files given (and " + MSP_OPTION_FLAG(*m, segmentation_prior) +
+                     "), every matching window keeps only the samples in its centre's region of "
+                     "the coarsest mask layer (objects), or unlabelled: a window reaching across "
+                     "an object's outline into what lies before or behind it is no evidence for "
+                     "its centre (docs/method.md section 2.3). No effect without mask files.");
   MSP_ADD_OPTION(t, *m, depth_range_from_sources,
                  "Depth range of each reference image (unless --PatchMatchStereo.depth_min/max "
                  "are given) from the sparse points it or any of its sources observes in front of "

@@ -135,6 +135,9 @@ struct MspStereoOptions {
   // In geometric passes, planes fitted to each colour segment's confirmed pixels, offered to its
   // weakly textured pixels within 3 % of one (docs/method.md section 2.13).
   bool consensus_planes = true;
+  // Mask files given, a matching window keeps only the samples in its centre's region of their
+  // coarsest layer, the objects (docs/method.md section 2.3).
+  bool region_windows = true;
   // Depth range of a reference image from the sparse points it or any of its sources observes
   // that lie in front of it and inside its image (COLMAP's percentile rule on more points);
   // false = its own observations only, as COLMAP.

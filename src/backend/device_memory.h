@@ -16,8 +16,9 @@ namespace msp {
 
 // Bytes per reference pixel of the per-pixel state on the device: depth,
 // normal (3), cost (float each) and the view mask (uint32), plus the
-// reliability classes, the unlit and the held pixels (1 byte each).
-constexpr size_t kDeviceStateBytesPerPixel = 4 + 12 + 4 + 4 + 1 + 1 + 1;
+// reliability classes, the unlit and the held pixels (1 byte each) and the
+// matching windows' regions (int32).
+constexpr size_t kDeviceStateBytesPerPixel = 4 + 12 + 4 + 4 + 1 + 1 + 1 + 4;
 
 // Bytes per reference pixel of the deformable step's whole-image maps on the
 // device: the iteration's snapshot of the planes (depth, normal), the

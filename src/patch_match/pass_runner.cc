@@ -374,6 +374,15 @@ class PassRunner {
              100.0 * std::count(held.begin(), held.end(), 1) / held.size());
       }
     }
+    // The mask layers at the pass's size (empty without mask files). The
+    // finest bounds the segment planes and the consensus planes; the
+    // coarsest, the objects, bounds the matching windows: a window across an
+    // object's outline matches what occludes it or what it occludes, while
+    // one across a crease between two faces sees the line both lie on.
+    const std::vector<int32_t> regions = MaskRegions(problem.ref, params);
+    const std::vector<int32_t> objects =
+        msp_.region_windows ? MaskRegions(problem.ref, params, true) : std::vector<int32_t>();
+    if (!objects.empty()) params.window_regions = objects.data();
     ledger_.AddImagePass(
         pass.round, std::to_string(params.state.width) + "x" + std::to_string(params.state.height),
         static_cast<long>(params.state.width) * params.state.height);
@@ -400,9 +409,6 @@ class PassRunner {
         engine_.LocalRefine(params);
       }
     });
-    // The finest mask layer at the pass's size (empty without mask files):
-    // it bounds the segment planes and the consensus planes.
-    const std::vector<int32_t> regions = MaskRegions(problem.ref, params);
     if (pass.segment_planes) {
       Measured(pass, Step::kSegmentPlanes,
                [&] { RunSegmentPlanes(params, problem, regions, &state); });
@@ -567,16 +573,17 @@ class PassRunner {
     return filter;
   }
 
-  // The finest layer of view `ref`'s mask files at the size of `params`'
-  // state; empty without mask files.
-  std::vector<int32_t> MaskRegions(int ref, const core::PassParams& params) const {
+  // The finest (or the coarsest) layer of view `ref`'s mask files at the
+  // size of `params`' state; empty without mask files.
+  std::vector<int32_t> MaskRegions(int ref, const core::PassParams& params,
+                                   bool coarsest = false) const {
     const ImageLabelLayers& given = views_[ref].mask_layers;
     if (given.source != LabelSource::kMaskFiles || given.layers.levels.empty()) return {};
-    LabelLayers finest;
-    finest.width = given.layers.width;
-    finest.height = given.layers.height;
-    finest.levels.push_back(given.layers.levels.back());
-    return ResampleNearest(finest, params.state.width, params.state.height).levels.front();
+    LabelLayers layer;
+    layer.width = given.layers.width;
+    layer.height = given.layers.height;
+    layer.levels.push_back(coarsest ? given.layers.levels.front() : given.layers.levels.back());
+    return ResampleNearest(layer, params.state.width, params.state.height).levels.front();
   }
 
   // Planar prior and consensus planes of one image after a geometric pass

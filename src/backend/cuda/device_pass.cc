@@ -29,6 +29,10 @@ DevicePass::DevicePass(const core::PassParams& host)
     held_ = DeviceBuffer<uint8_t>::FromHost(host.held, n);
     device.held = held_.data();
   }
+  if (host.window_regions != nullptr) {
+    window_regions_ = DeviceBuffer<int32_t>::FromHost(host.window_regions, n);
+    device.window_regions = window_regions_.data();
+  }
   params_ = DeviceBuffer<core::PassParams>::FromHost(&device, 1);
 }
 

@@ -42,6 +42,7 @@ class DevicePass {
   DeviceBuffer<uint32_t> mask_;
   DeviceBuffer<uint8_t> unlit_;
   DeviceBuffer<uint8_t> held_;
+  DeviceBuffer<int32_t> window_regions_;
   DeviceBuffer<core::PassParams> params_;
 };
 

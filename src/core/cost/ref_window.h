@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 
 #include "core/cost/ncc.h"
 #include "core/math/hd.h"
@@ -48,9 +49,39 @@ struct RefWindow {
 
 MSP_HD int PaddedSamples(int n) { return (n + kWindowLanes - 1) / kWindowLanes * kWindowLanes; }
 
-// Prepares the window of `radius` and `step` at (col, row).
+// A window keeps only the samples of its centre's region when the region
+// holds at least this share of them; fewer are too few to match, and the
+// region is a sliver there: the whole window is its best evidence.
+constexpr int kMinRegionSampleQuarters = 1;
+
+// The region of the window's centre in `regions` (a label per reference
+// pixel, 0 = unlabelled), or 0 when the window keeps every sample: no
+// regions, an unlabelled centre, a region that fills the window, or one that
+// holds less than a quarter of it (kMinRegionSampleQuarters).
+MSP_HD int32_t WindowRegion(const ImageView& ref, const int32_t* regions, int col, int row,
+                            int radius, int step) {
+  if (regions == nullptr) return 0;
+  const int32_t centre = regions[row * ref.width + col];
+  if (centre == 0) return 0;
+  int total = 0, outside = 0;
+  for (int r = row - radius; r <= row + radius; r += step) {
+    for (int c = col - radius; c <= col + radius; c += step) {
+      if (c < 0 || r < 0 || c >= ref.width || r >= ref.height) continue;
+      const int32_t label = regions[r * ref.width + c];
+      ++total;
+      outside += label != 0 && label != centre;
+    }
+  }
+  const int inside = total - outside;
+  return outside > 0 && 4 * inside >= kMinRegionSampleQuarters * total ? centre : 0;
+}
+
+// Prepares the window of `radius` and `step` at (col, row). With `regions`
+// (null: none), a window keeps only the samples that share its centre's
+// region or are unlabelled (WindowRegion): a window that reaches across a
+// region edge into another surface's texture is no evidence for the centre.
 MSP_HD void PrepareRefWindow(const ImageView& ref, int col, int row, int radius, int step,
-                             int bilateral, RefWindow* w) {
+                             int bilateral, const int32_t* regions, RefWindow* w) {
   w->col = col;
   w->row = row;
   w->radius = radius;
@@ -60,6 +91,9 @@ MSP_HD void PrepareRefWindow(const ImageView& ref, int col, int row, int radius,
   w->clipped = !(col - radius >= 0 && row - radius >= 0 && col + radius < ref.width &&
                  row + radius < ref.height);
   if (bilateral || per_side * per_side > kMaxFastWindowSamples) return;
+  const int32_t region = WindowRegion(ref, regions, col, row, radius, step);
+  // A window cut to its region is partial, as one cut by the image border.
+  if (region != 0) w->clipped = 1;
   // The box starts at the centre, which the padding lanes repeat. Integer
   // bounds: fminf and fmaxf are library calls here, not instructions.
   int box_c0 = col, box_c1 = col, box_r0 = row, box_r1 = row;
@@ -69,6 +103,10 @@ MSP_HD void PrepareRefWindow(const ImageView& ref, int col, int row, int radius,
     for (int ox = -radius; ox <= radius; ox += step) {
       const int c = col + ox, r = row + oy;
       if (c < 0 || r < 0 || c >= ref.width || r >= ref.height) continue;
+      if (region != 0) {
+        const int32_t label = regions[r * ref.width + c];
+        if (label != 0 && label != region) continue;
+      }
       w->x[n] = static_cast<float>(c);
       w->y[n] = static_cast<float>(r);
       w->value[n] = ref.At(c, r);

@@ -92,6 +92,9 @@ struct PassParams {
   // moves it, while it is scored, proposes its plane and is filtered as any
   // (the finest round's weakly textured pixels, held_pixels.h); null when none.
   const uint8_t* held = nullptr;
+  // A region label per reference pixel (0 = unlabelled): a matching window
+  // keeps only its centre's region (PrepareRefWindow); null: whole windows.
+  const int32_t* window_regions = nullptr;
   PixelStateView state;
 };
 
@@ -116,7 +119,7 @@ MSP_HD bool DepthInRange(const PassParams& p, float depth) {
 // The matching window of pixel (col, row), prepared once per pixel update.
 MSP_HD void PrepareWindow(const PassParams& p, int col, int row, RefWindow* w) {
   PrepareRefWindow(p.ref_image, col, row, p.ncc.window_radius, p.ncc.window_step, p.ncc.bilateral,
-                   w);
+                   p.window_regions, w);
 }
 
 // A hypothesis as every source view scores it at pixel (col, row): the

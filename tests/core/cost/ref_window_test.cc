@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "core/cost/window_batch.h"
 #include "core/cost/window_cost.h"
@@ -19,7 +21,7 @@ const NccParams kUniform{5, 2, 0, 5.0f, 0.2f};
 TEST(RefWindow, PreparedWindowIsNormalised) {
   const Image img = test::NoiseImage(kW, kH, 3);
   RefWindow w;
-  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, nullptr, &w);
   ASSERT_EQ(w.num_samples, 36);
   EXPECT_EQ(w.textured, 1);
   float sum = 0.0f, sum_sq = 0.0f;
@@ -41,26 +43,104 @@ TEST(RefWindow, BorderWindowKeepsTheSamplesInsideTheReference) {
   const Image img = test::NoiseImage(kW, kH, 3);
   RefWindow w;
   // Columns -2, 0, 2, 4, 6, 8: five of six inside; rows all inside.
-  PrepareRefWindow(img.View(), 3, 15, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 3, 15, 5, 2, 0, nullptr, &w);
   EXPECT_EQ(w.clipped, 1);
   ASSERT_EQ(w.num_samples, 30);
   for (int k = 0; k < w.num_samples; ++k) EXPECT_GE(w.x[k], 0.0f);
   // The corner: columns and rows 1, 3, 5 only; the centre (0, 0) is not a sample.
-  PrepareRefWindow(img.View(), 0, 0, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 0, 0, 5, 2, 0, nullptr, &w);
   EXPECT_EQ(w.num_samples, 9);
-  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, nullptr, &w);
   EXPECT_EQ(w.clipped, 0);
 }
 
 TEST(RefWindow, BilateralAndLargeWindowsTakeTheGeneralPath) {
   const Image img = test::NoiseImage(kW, kH, 3);
   RefWindow w;
-  PrepareRefWindow(img.View(), 20, 15, 5, 2, 1, &w);
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 1, nullptr, &w);
   EXPECT_EQ(w.num_samples, 0);
-  PrepareRefWindow(img.View(), 20, 15, 5, 1, 0, &w);  // 121 samples
+  PrepareRefWindow(img.View(), 20, 15, 5, 1, 0, nullptr, &w);  // 121 samples
   EXPECT_EQ(w.num_samples, 0);
-  PrepareRefWindow(img.View(), 20, 15, 7, 2, 0, &w);  // 8 x 8 = 64 still fits
+  PrepareRefWindow(img.View(), 20, 15, 7, 2, 0, nullptr, &w);  // 8 x 8 = 64 still fits
   EXPECT_EQ(w.num_samples, 64);
+}
+
+// Regions: columns first..last are region 1, the others region 2, except
+// that column `unlabelled` is 0.
+std::vector<int32_t> StripeRegions(int first, int last, int unlabelled = -1) {
+  std::vector<int32_t> regions(kW * kH);
+  for (int row = 0; row < kH; ++row) {
+    for (int col = 0; col < kW; ++col) {
+      const bool stripe = col >= first && col <= last;
+      regions[row * kW + col] = col == unlabelled ? 0 : (stripe ? 1 : 2);
+    }
+  }
+  return regions;
+}
+
+TEST(RefWindow, RegionWindowKeepsItsCentresRegionAndTheUnlabelled) {
+  const Image img = test::NoiseImage(kW, kH, 3);
+  const std::vector<int32_t> regions = StripeRegions(0, 21, 15);
+  RefWindow w;
+  // Centre (20, 15): columns 15..25 step 2; 15 is unlabelled, 17-21 region
+  // 1, 23 and 25 region 2: 4 of 6 columns remain.
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, regions.data(), &w);
+  ASSERT_EQ(w.num_samples, 24);
+  EXPECT_EQ(w.clipped, 1);  // partial: the centre's mapping is checked
+  for (int k = 0; k < w.num_samples; ++k) EXPECT_LT(w.x[k], 22.0f);
+  float sum = 0.0f, sum_sq = 0.0f;
+  for (int k = 0; k < w.num_samples; ++k) {
+    sum += w.value[k];
+    sum_sq += w.value[k] * w.value[k];
+  }
+  EXPECT_NEAR(sum, 0.0f, 1e-5f);
+  EXPECT_NEAR(sum_sq, 1.0f, 1e-5f);
+  // Whole windows: no regions, one region throughout, an unlabelled centre.
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, nullptr, &w);
+  EXPECT_EQ(w.num_samples, 36);
+  PrepareRefWindow(img.View(), 8, 15, 5, 2, 0, regions.data(), &w);
+  EXPECT_EQ(w.num_samples, 36);
+  EXPECT_EQ(w.clipped, 0);
+  const std::vector<int32_t> centre_unlabelled = StripeRegions(0, 21, 20);
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, centre_unlabelled.data(), &w);
+  EXPECT_EQ(w.num_samples, 36);
+}
+
+TEST(RefWindow, RegionSliverKeepsTheWholeWindow) {
+  const Image img = test::NoiseImage(kW, kH, 3);
+  // Centre (19, 15) in a stripe of columns 19-20: of the window's columns
+  // 14, 16, ..., 24 only 20 is in it (one of six, under a quarter): too few
+  // samples to match, the whole window stays.
+  RefWindow w;
+  PrepareRefWindow(img.View(), 19, 15, 5, 2, 0, StripeRegions(19, 20).data(), &w);
+  EXPECT_EQ(w.num_samples, 36);
+  // Columns 18-20: two of six (a third) are enough.
+  PrepareRefWindow(img.View(), 19, 15, 5, 2, 0, StripeRegions(18, 20).data(), &w);
+  EXPECT_EQ(w.num_samples, 12);
+}
+
+// A blank wall pixel beside a textured box: under the box's shift its whole
+// window matches on the box's texture, so the box's depth would be the
+// wall's. Cut to the wall's region the window holds no texture, and the
+// shift costs kMaxCost: no evidence, which the wall's own plane then wins.
+TEST(RefWindow, WindowCutAtTheRegionEdgeGivesTheBoxsDepthNoEvidence) {
+  Image ref = test::NoiseImage(kW, kH, 21);
+  for (int row = 0; row < kH; ++row) {
+    for (int col = 24; col < kW; ++col) ref.At(col, row) = 0.5f;  // the wall
+  }
+  // The source sees the box 3 px further left; the wall is blank anyway.
+  Image src = test::FlatImage(kW, kH, 0.5f);
+  for (int row = 0; row < kH; ++row) {
+    for (int col = 0; col + 3 < kW; ++col) src.At(col, row) = ref.At(col + 3, row);
+  }
+  const Mat3 box_shift{{1.0f, 0.0f, -3.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f}};
+  const std::vector<int32_t> regions = StripeRegions(0, 23);
+  RefWindow whole, cut;
+  PrepareRefWindow(ref.View(), 26, 15, 5, 2, 0, nullptr, &whole);
+  PrepareRefWindow(ref.View(), 26, 15, 5, 2, 0, regions.data(), &cut);
+  EXPECT_LT(WindowNccCost(whole, ref.View(), src.View(), box_shift, kUniform), 0.05f);
+  EXPECT_EQ(cut.textured, 0);
+  EXPECT_EQ(WindowNccCost(cut, ref.View(), src.View(), box_shift, kUniform), kMaxCost);
 }
 
 // True when a sample of w warps to within a rounding margin of the source
@@ -85,7 +165,7 @@ TEST(RefWindow, CostEqualsTheGeneralNcc) {
   for (int row = 5; row < kH - 5; row += 3) {
     for (int col = 5; col < kW - 5; col += 3) {
       RefWindow w;
-      PrepareRefWindow(ref.View(), col, row, 5, 2, 0, &w);
+      PrepareRefWindow(ref.View(), col, row, 5, 2, 0, nullptr, &w);
       // The larger shifts push windows near the borders partly out of the source.
       for (const Mat3& H : {test::MildWarp(0.3f, -0.4f), test::MildWarp(1.7f, 0.6f),
                             test::MildWarp(-2.5f, 3.2f), test::MildWarp(-6.0f, 4.5f)}) {
@@ -118,7 +198,7 @@ TEST(RefWindow, BorderWindowCostEqualsTheGeneralNcc) {
     for (int col = 0; col < kW; ++col) {
       if (col >= 5 && row >= 5 && col < kW - 5 && row < kH - 5) continue;
       RefWindow w;
-      PrepareRefWindow(ref.View(), col, row, 5, 2, 0, &w);
+      PrepareRefWindow(ref.View(), col, row, 5, 2, 0, nullptr, &w);
       ASSERT_EQ(w.clipped, 1);
       for (const Mat3& H :
            {test::MildWarp(0.3f, -0.4f), test::MildWarp(-0.6f, 0.7f), test::MildWarp(1.7f, 0.6f)}) {
@@ -140,7 +220,7 @@ TEST(RefWindow, BorderWindowCostEqualsTheGeneralNcc) {
   // padding lanes repeat the centre and would catch it; the scalar path
   // has no padding.)
   RefWindow corner;
-  PrepareRefWindow(ref.View(), 0, 0, 5, 2, 0, &corner);
+  PrepareRefWindow(ref.View(), 0, 0, 5, 2, 0, nullptr, &corner);
   const Mat3 half_left_up = {{1, 0, -0.5f, 0, 1, -0.5f, 0, 0, 1}};
   SourceSums sums;
   ASSERT_TRUE(WholeWindowSumsScalar(corner, src.View(), half_left_up, &sums));
@@ -152,7 +232,7 @@ TEST(RefWindow, BorderWindowCostEqualsTheGeneralNcc) {
 // `lanes`, and each warp's cost alone (kMaxCost outside `lanes`).
 void BatchAndAlone(const Image& ref, const Image& src, const Mat3* H, uint32_t lanes, int col,
                    int row, RefWindow* w, float* batch, float* alone) {
-  PrepareRefWindow(ref.View(), col, row, 5, 2, 0, w);
+  PrepareRefWindow(ref.View(), col, row, 5, 2, 0, nullptr, w);
   WindowNccCosts(*w, ref.View(), src.View(), H, lanes, kUniform, batch);
   for (int l = 0; l < kWindowLanes; ++l) {
     alone[l] =
@@ -194,7 +274,7 @@ TEST(RefWindow, BatchOfWarpsCostsWhatEachWarpCostsAlone) {
   // An untextured reference window costs kMaxCost in every lane.
   const Image flat = test::FlatImage(kW, kH, 0.5f);
   RefWindow w;
-  PrepareRefWindow(flat.View(), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(flat.View(), 20, 15, 5, 2, 0, nullptr, &w);
   float costs[kWindowLanes];
   WindowNccCosts(w, flat.View(), src.View(), H, lanes, kUniform, costs);
   for (int l = 0; l < kWindowLanes; ++l) EXPECT_EQ(costs[l], kMaxCost);
@@ -224,13 +304,13 @@ TEST(RefWindow, BatchOfWholeWarpsCostsWhatEachWarpCostsAlone) {
 TEST(RefWindow, BoxHoldsTheSamplesAndTheCentre) {
   const Image img = test::NoiseImage(kW, kH, 3);
   RefWindow w;
-  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, nullptr, &w);
   EXPECT_EQ(w.box[0], 15.0f);
   EXPECT_EQ(w.box[1], 25.0f);
   EXPECT_EQ(w.box[2], 10.0f);
   EXPECT_EQ(w.box[3], 20.0f);
   // The corner window's samples are columns and rows 1, 3, 5; its centre is (0, 0).
-  PrepareRefWindow(img.View(), 0, 0, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 0, 0, 5, 2, 0, nullptr, &w);
   EXPECT_EQ(w.box[0], 0.0f);
   EXPECT_EQ(w.box[1], 5.0f);
   EXPECT_EQ(w.box[2], 0.0f);
@@ -289,7 +369,7 @@ TEST(RefWindow, CentreTestDropsOnlyLanesThatCostMax) {
     }
     const int col = trial % kW, row = (7 * trial) % kH;
     RefWindow w;
-    PrepareRefWindow(ref.View(), col, row, 5, 2, 0, &w);
+    PrepareRefWindow(ref.View(), col, row, 5, 2, 0, nullptr, &w);
     const uint32_t near = CentreNearSourceLanes(WarpPerLane(H, 0xffu, src.View()), col, row);
     for (int l = 0; l < kWindowLanes; ++l) {
       if ((near >> l) & 1u) {
@@ -315,7 +395,7 @@ TEST(RefWindow, CentreTestDropsOnlyLanesThatCostMax) {
 TEST(RefWindow, PartialWindowNeedsItsCentreAndHalfTheSamples) {
   const Image img = test::NoiseImage(kW, kH, 3);
   RefWindow w;
-  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, nullptr, &w);
   // Samples land at x = 42..52: the three columns past x = 47 leave the
   // source, half the window stays, and so does the centre (x = 47).
   const Mat3 right_third_out = {{1, 0, 27.0f, 0, 1, 0, 0, 0, 1}};
@@ -330,7 +410,7 @@ TEST(RefWindow, ScalarAndVectorSumsAgree) {
   const Image ref = test::NoiseImage(kW, kH, 5);
   const Image src = test::NoiseImage(kW, kH, 6);
   RefWindow w;
-  PrepareRefWindow(ref.View(), 24, 18, 5, 2, 0, &w);
+  PrepareRefWindow(ref.View(), 24, 18, 5, 2, 0, nullptr, &w);
   SourceSums scalar, vector;
   ASSERT_TRUE(WholeWindowSumsScalar(w, src.View(), test::MildWarp(0.3f, 0.2f), &scalar));
   ASSERT_TRUE(WholeWindowSums(w, src.View(), test::MildWarp(0.3f, 0.2f), &vector));
@@ -342,7 +422,7 @@ TEST(RefWindow, ScalarAndVectorSumsAgree) {
 TEST(RefWindow, SampleOutsideTheSourceRefusesTheFastPath) {
   const Image img = test::NoiseImage(kW, kH, 3);
   RefWindow w;
-  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, nullptr, &w);
   SourceSums sums;
   const Mat3 near_right_edge = {
       {1, 0, kW - 1.0f - 25.5f, 0, 1, 0, 0, 0, 1}};  // last column at 46.5
@@ -358,7 +438,7 @@ TEST(RefWindow, FlatReferenceCostsMax) {
   const Image flat = test::FlatImage(kW, kH, 0.5f);
   const Image src = test::NoiseImage(kW, kH, 4);
   RefWindow w;
-  PrepareRefWindow(flat.View(), 20, 15, 5, 2, 0, &w);
+  PrepareRefWindow(flat.View(), 20, 15, 5, 2, 0, nullptr, &w);
   EXPECT_EQ(w.textured, 0);
   EXPECT_EQ(WindowNccCost(w, flat.View(), src.View(), test::MildWarp(0.3f, 0.2f), kUniform),
             kMaxCost);

@@ -21,8 +21,8 @@ TEST(DeviceMemory, EstimateCountsEveryBufferOfTheKernels) {
   const DeviceMemoryEstimate photometric = EstimateDeviceMemory(ref, sources, false);
   EXPECT_EQ(photometric.images, 5 * pixels * sizeof(float));
   EXPECT_EQ(photometric.source_depths, 0u);
-  // + the unlit and the held pixels
-  EXPECT_EQ(photometric.state, pixels * (4 + 12 + 4 + 4 + 1 + 1 + 1));
+  // + the unlit and the held pixels, and the matching windows' regions
+  EXPECT_EQ(photometric.state, pixels * (4 + 12 + 4 + 4 + 1 + 1 + 1 + 4));
   EXPECT_EQ(photometric.deformable, pixels * (4 + 12 + 4 + 4 + 1 + 4));
   EXPECT_EQ(photometric.params, sizeof(core::PassParams));
   const DeviceMemoryEstimate geometric = EstimateDeviceMemory(ref, sources, true);

@@ -215,6 +215,101 @@ TEST(PatchMatchCpu, UserMaskLayersAreUsedOverTheEmbeddedSegmenter) {
   }
 }
 
+constexpr float kStripDepth = 1.5f, kWallDepth = 3.0f, kStripHalfWidth = 0.2f;
+
+// True when pixel (col, row) of `cam` sees the strip (the world's x within
+// kStripHalfWidth at z = kStripDepth), which stands before the wall.
+bool SeesStrip(const core::Camera& cam, int col, int row) {
+  return std::fabs(test::PointOnPlaneZ(cam, col, row, kStripDepth).x) <= kStripHalfWidth;
+}
+
+// Views of a strongly textured vertical strip (a box, depth 1.5) before a
+// wall of weak texture (depth 3), sources to the left and right; each view
+// with the objects as its one mask layer (strip 1, wall 2) when `masks`.
+std::vector<View> RenderStripBeforeWall(int width, int height, bool masks) {
+  std::vector<View> views;
+  for (const float x : {0.0f, -0.25f, 0.25f, -0.5f}) {
+    View view;
+    view.name = "view_" + std::to_string(views.size()) + ".png";
+    view.camera = test::CentredCamera(width, height, core::Vec3{x, 0.0f, 0.0f});
+    view.gray = DenseMap(width, height, 1);
+    view.color = DenseMap(width, height, 3);
+    LabelLayers objects;
+    objects.width = width;
+    objects.height = height;
+    objects.levels.assign(1, std::vector<int32_t>(width * height));
+    for (int r = 0; r < height; ++r) {
+      for (int c = 0; c < width; ++c) {
+        const bool strip = SeesStrip(view.camera, c, r);
+        const core::Vec3 X =
+            test::PointOnPlaneZ(view.camera, c, r, strip ? kStripDepth : kWallDepth);
+        const float texture = test::MultiScaleTexture(X.x, X.y);
+        const float g = strip ? texture : 0.5f + 0.3f * (texture - 0.5f);
+        view.gray.At(r, c) = g;
+        for (int k = 0; k < 3; ++k) view.color.At(r, c, k) = g;
+        objects.levels[0][r * width + c] = strip ? 1 : 2;
+      }
+    }
+    if (masks) {
+      view.mask_layers.source = LabelSource::kMaskFiles;
+      view.mask_layers.layers = objects;
+    }
+    views.push_back(std::move(view));
+  }
+  return views;
+}
+
+// The reference's wall pixels within 4 px of the strip's outline, and how
+// many of them hold the wall's depth or the strip's (within 2 %).
+struct NearStrip {
+  int pixels = 0, wall = 0, strip = 0;
+};
+
+NearStrip WallNearTheStrip(bool masks, bool region_windows) {
+  constexpr int kWidth = 96, kHeight = 72;
+  const std::vector<View> views = RenderStripBeforeWall(kWidth, kHeight, masks);
+  PatchMatchStereoOptions pm;
+  MspStereoOptions msp;
+  msp.region_windows = region_windows;
+  MemorySink sink;
+  const test::TempDir scratch;
+  RunPatchMatchCpu(views, AllProblems(4), pm, msp, scratch.path(), sink);
+  const DenseMap& depth = sink.maps.at({0, std::string("geometric")}).first;
+  const core::Camera& cam = views[0].camera;
+  NearStrip near;
+  for (int r = 8; r < kHeight - 8; ++r) {
+    for (int c = 8; c < kWidth - 8; ++c) {
+      if (SeesStrip(cam, c, r)) continue;
+      bool by_strip = false;
+      for (int dc = -4; dc <= 4; ++dc) by_strip = by_strip || SeesStrip(cam, c + dc, r);
+      if (!by_strip) continue;
+      ++near.pixels;
+      near.wall += std::fabs(depth.At(r, c) - kWallDepth) < 0.02f * kWallDepth;
+      near.strip += std::fabs(depth.At(r, c) - kStripDepth) < 0.02f * kStripDepth;
+    }
+  }
+  return near;
+}
+
+// Near the strip the wall's whole windows are mostly the strip's texture
+// and match at its depth: the strip grows over the wall. With the objects as
+// mask layers the wall's windows keep only the wall: none of its pixels
+// takes the strip's depth, and those two sources see take the wall's (the
+// others, hidden by the strip from the sources on its left, are left
+// empty). It is the windows that do it: with the switch off the masks still
+// bound the planes, and the strip grows as without masks.
+TEST(PatchMatchCpu, WindowsBoundedByTheObjectsKeepTheWallOffTheStripsDepth) {
+  for (const bool masks : {false, true}) {
+    const NearStrip whole = WallNearTheStrip(masks, /*region_windows=*/false);
+    ASSERT_GT(whole.pixels, 400);
+    EXPECT_GT(whole.strip, 0.9 * whole.pixels) << masks;
+    EXPECT_EQ(whole.wall, 0) << masks;
+  }
+  const NearStrip bounded = WallNearTheStrip(/*masks=*/true, /*region_windows=*/true);
+  EXPECT_LT(bounded.strip, 0.02 * bounded.pixels);
+  EXPECT_GT(bounded.wall, 0.25 * bounded.pixels);
+}
+
 // A cache budget smaller than one image's state spills every other state to
 // the scratch folder between passes; the maps must not change.
 TEST(PatchMatchCpu, SpillingStateGivesIdenticalMaps) {

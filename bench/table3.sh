@@ -20,7 +20,8 @@
 # existed, whose rows then run that part as that binary does. Without it an
 # unknown option stops the script before the first run.
 # --ideal_masks adds, after `full`, the rows of the method with a perfect
-# prior (full_ideal, noref_ideal; bench/lib/table3_rows.sh): they read the
+# prior (full_ideal, noref_ideal, default_ideal, whole_windows_ideal;
+# bench/lib/table3_rows.sh): they read the
 # scene's ideal mask layers, its surface ids (msp_make_scene --ideal_masks,
 # made again in a scratch folder from ground_truth/scene.json, whose images
 # must match the workspace's byte for byte), and every other row runs the

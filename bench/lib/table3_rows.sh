@@ -47,14 +47,16 @@ rows=(
 # bench/table3.sh --ideal_masks, which puts them after `full`. `full` is
 # `default` with deformable patches, so full_ideal is both with the perfect
 # prior (`default` itself runs no prior); noref_ideal shows what the CRF does
-# to edges that are already exact; default_ideal gives the segment planes and
-# the consensus planes the true surfaces as regions (docs/method.md sections
-# 2.10, 2.13).
+# to edges that are already exact; default_ideal gives the matching windows
+# the true objects and the segment planes and the consensus planes the true
+# surfaces as regions (docs/method.md sections 2.3, 2.10, 2.13), and
+# whole_windows_ideal leaves the windows whole.
 # shellcheck disable=SC2034  # used by bench/table3.sh
 ideal_rows=(
   "full_ideal|MSP-MVS, ideal masks|$METHOD"
   "noref_ideal|MSP-MVS, ideal masks, w/o Ref. (no CRF)|$METHOD $NO_REF"
-  "default_ideal|default options, ideal masks (the segment and consensus planes' regions)|"
+  "default_ideal|default options, ideal masks (the windows', segment and consensus planes' regions)|"
+  "whole_windows_ideal|default options, ideal masks, whole windows|--MspStereo.region_windows false"
 )
 
 # plan_fields ROW: sets `id`, `label` and the array `options` from an

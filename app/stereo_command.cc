@@ -77,10 +77,14 @@ void WarnAboutIgnoredOptions(const StereoCommandOptions& options) {
     LogWarning(MSP_OPTION_FLAG(p, ncc_sigma) + " / " + MSP_OPTION_FLAG(p, incident_angle_sigma) +
                " are ignored (view selection follows ACMM, not COLMAP's likelihood model)");
   }
-  if (m.segmentation_prior && !m.deformable) {
+  // Without deformable patches the prior's only use is the mask files, which
+  // bound the matching windows, the segment planes and the consensus planes.
+  if (m.segmentation_prior && !m.deformable &&
+      !(m.region_windows || m.segment_planes || m.consensus_planes)) {
     LogWarning(MSP_OPTION_FLAG(m, segmentation_prior) + " has no effect without " +
-               MSP_OPTION_FLAG(m, deformable) +
-               " (the prior confines the anchors of deformable patches)");
+               MSP_OPTION_FLAG(m, deformable) + " or a step that mask files bound (" +
+               MSP_OPTION_FLAG(m, region_windows) + ", " + MSP_OPTION_FLAG(m, segment_planes) +
+               ", " + MSP_OPTION_FLAG(m, consensus_planes) + ")");
   }
   if (m.write_previews && !(m.segmentation_prior && m.deformable)) {
     LogWarning(MSP_OPTION_FLAG(m, write_previews) +

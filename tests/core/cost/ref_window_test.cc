@@ -18,12 +18,8 @@ using test::Image;
 constexpr int kW = 48, kH = 36;
 const NccParams kUniform{5, 2, 0, 5.0f, 0.2f};
 
-TEST(RefWindow, PreparedWindowIsNormalised) {
-  const Image img = test::NoiseImage(kW, kH, 3);
-  RefWindow w;
-  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, nullptr, &w);
-  ASSERT_EQ(w.num_samples, 36);
-  EXPECT_EQ(w.textured, 1);
+// The prepared reference values have zero mean and unit norm.
+void ExpectNormalised(const RefWindow& w) {
   float sum = 0.0f, sum_sq = 0.0f;
   for (int k = 0; k < w.num_samples; ++k) {
     sum += w.value[k];
@@ -31,6 +27,15 @@ TEST(RefWindow, PreparedWindowIsNormalised) {
   }
   EXPECT_NEAR(sum, 0.0f, 1e-5f);
   EXPECT_NEAR(sum_sq, 1.0f, 1e-5f);
+}
+
+TEST(RefWindow, PreparedWindowIsNormalised) {
+  const Image img = test::NoiseImage(kW, kH, 3);
+  RefWindow w;
+  PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, nullptr, &w);
+  ASSERT_EQ(w.num_samples, 36);
+  EXPECT_EQ(w.textured, 1);
+  ExpectNormalised(w);
   // Padding lanes up to 40 repeat the centre with no weight.
   for (int k = 36; k < 40; ++k) {
     EXPECT_EQ(w.x[k], 20.0f);
@@ -88,13 +93,7 @@ TEST(RefWindow, RegionWindowKeepsItsCentresRegionAndTheUnlabelled) {
   ASSERT_EQ(w.num_samples, 24);
   EXPECT_EQ(w.clipped, 1);  // partial: the centre's mapping is checked
   for (int k = 0; k < w.num_samples; ++k) EXPECT_LT(w.x[k], 22.0f);
-  float sum = 0.0f, sum_sq = 0.0f;
-  for (int k = 0; k < w.num_samples; ++k) {
-    sum += w.value[k];
-    sum_sq += w.value[k] * w.value[k];
-  }
-  EXPECT_NEAR(sum, 0.0f, 1e-5f);
-  EXPECT_NEAR(sum_sq, 1.0f, 1e-5f);
+  ExpectNormalised(w);
   // Whole windows: no regions, one region throughout, an unlabelled centre.
   PrepareRefWindow(img.View(), 20, 15, 5, 2, 0, nullptr, &w);
   EXPECT_EQ(w.num_samples, 36);

@@ -35,6 +35,8 @@ SegmentPlane OwnPlane(float col = 20.0f) {
 SegmentPlane SurroundingPlane() { return AcceptedPlane(core::Vec3{0.0f, 0.0f, -1.0f}); }
 
 constexpr float kTextured = 2.0f * core::kTexturedWindowStd;
+// Rows of a crease too short to be evidence at 640 pixels (EvidenceNeededScalesWithTheImage).
+constexpr int kShortCreaseRows = 4;
 
 // A 40 x kRows image cut into vertical strips of 8 columns, segments 1..5
 // from the left; every strip reaches the top and bottom borders. Untextured
@@ -254,6 +256,29 @@ TEST(OpenSky, BlankWallFramedByCreasesKeepsItsPlane) {
   s.HoldTilted(3);
   for (int id = 4; id <= 5; ++id) s.Texture(id);
   EXPECT_TRUE(s.Run().empty());
+}
+
+// The evidence a surface needs scales with the image's size, as the
+// evidence lies along lines. Two blank walls meet at a crease matched over
+// a few rows: in a 40 x 30 image that is evidence for both (3 pixels
+// needed); in a 40 x 640 image, as tall as a 640x480 one, it is not (12).
+template <int kRows>
+std::vector<uint8_t> ShortCrease(StripsOf<kRows>* s) {
+  s->Set(3, &s->grey, 0.7f);
+  s->Edge(2 * StripsOf<kRows>::kStrip, 0, kShortCreaseRows);
+  for (int id : {1, 4, 5}) s->Texture(id);
+  return s->Run();
+}
+
+TEST(OpenSky, EvidenceNeededScalesWithTheImage) {
+  Strips small;
+  const std::vector<uint8_t> small_sky = ShortCrease(&small);
+  EXPECT_TRUE(small.Untouched(small_sky, 2));
+  EXPECT_TRUE(small.Untouched(small_sky, 3));
+  StripsOf<640> large;
+  const std::vector<uint8_t> large_sky = ShortCrease(&large);
+  EXPECT_TRUE(large.Marked(large_sky, 2));
+  EXPECT_TRUE(large.Marked(large_sky, 3));
 }
 
 // A room seen from inside: a white wall reaches the top border; its corners

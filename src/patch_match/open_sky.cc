@@ -70,7 +70,7 @@ constexpr long kMinOwnEvidence = 12;
 // smaller image has proportionally fewer (at least kMinOwnEvidenceSmall):
 // the evidence lies along lines, so its count scales with the image's side
 // (bundled scene, default options: with 12 at every size the rule emptied
-// 0.03 % of the surface pixels at 640x480, 2.9 % at 320x240 and 19 % at
+// 0.03 % of the surface pixels at 640x480, 2.9 % at 320x240 and 10-20 % at
 // 160x120, the back wall and the floor).
 constexpr int kMinOwnEvidenceImageSize = 640;
 constexpr double kMinOwnEvidenceSmall = 3.0;

@@ -40,6 +40,9 @@ stereo() {
 stereo_bg() {
   ws=$1
   shift
+  # The log of an earlier run on $ws goes first: the background job truncates
+  # it only once it starts, and wait_for_line would read the old one.
+  rm -f "$ws.log" "$ws.err"
   # shellcheck disable=SC2086
   nice -n 15 "$BIN/msp_stereo" --workspace_path "$ws" $STEREO_OPTIONS "$@" > "$ws.log" 2> "$ws.err" &
   pid=$!

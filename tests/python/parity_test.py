@@ -47,13 +47,13 @@ class Ticker:
     """A Python thread that ticks every few milliseconds, which it can only
     do while no other thread holds the GIL."""
 
+    PERIOD = 0.005  # seconds
+
     def __init__(self):
         self.ticks = 0
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._run)
         self._thread.start()
-
-    PERIOD = 0.005  # seconds
 
     def _run(self):
         while not self._stop.wait(self.PERIOD):

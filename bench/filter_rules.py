@@ -23,7 +23,8 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from map_stages import read_array, read_cameras  # noqa: E402
 
-# name: (minimum angle in degrees, pixel tolerance or None, depth tolerance or None, views)
+# name: (minimum angle in degrees, pixel tolerance or None, depth tolerance or None, views,
+#        and optionally the depth tolerance at which one view alone keeps a pixel)
 RULES = [
     ("COLMAP: angle 3, reprojection 1 px, 2 views", (3, 1.0, None, 2)),
     ("angle 2, reprojection 1 px, 2 views", (2, 1.0, None, 2)),
@@ -35,6 +36,9 @@ RULES = [
     ("angle 3, depth 2 %, 2 views", (3, None, 0.02, 2)),
     ("angle 2, depth 1 %, 2 views", (2, None, 0.01, 2)),
     ("angle 1, depth 1 %, 3 views", (1, None, 0.01, 3)),
+    ("angle 3, depth 1 %, 2 views, or 1 view at 0.5 % (default)", (3, None, 0.01, 2, 0.005)),
+    ("angle 3, depth 1 %, 2 views, or 1 view at 0.3 %", (3, None, 0.01, 2, 0.003)),
+    ("angle 3, depth 1 %, 2 views, or 1 view at 1 %", (3, None, 0.01, 2, 0.01)),
 ]
 
 
@@ -110,10 +114,12 @@ def main():
         measured += np.sum(gt > 0)
         g = gt[has]
         right = (g > 0) & (np.abs(depth[n][has] - g) <= args.threshold * g)
-        for k, (_, (angle, pixel, relative, views)) in enumerate(RULES):
-            agree = angles >= angle
-            agree &= pixels <= pixel if pixel is not None else depths <= relative
+        for k, (_, (angle, pixel, relative, views, *alone)) in enumerate(RULES):
+            wide = angles >= angle
+            agree = wide & (pixels <= pixel if pixel is not None else depths <= relative)
             keep = agree.sum(0) >= views
+            if alone:
+                keep |= (wide & (depths <= alone[0])).any(0)
             totals[k] += [np.sum(keep & (g > 0)), np.sum(keep & right)]
     print("| rule | kept %% | kept and within %g %% | precision %% |" % (100 * args.threshold))
     print("|---|---|---|---|")

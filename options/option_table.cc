@@ -288,6 +288,12 @@ void DefineMspStereoCommonOptions(MspStereoOptions* m, OptionVisitor* t) {
                  "depth there (the depth error the agreement bounds, as COLMAP's fusion judges "
                  "it; docs/method.md section 2.9). 0 = COLMAP's test: the reprojection error "
                  "in pixels against filter_geom_consistency_max_cost.");
+  MSP_ADD_OPTION(t, *m, filter_single_view_depth_error,
+                 "With geometric consistency, the final filter also keeps a pixel that a single "
+                 "source confirms (every test passed) with the depth within this share, tighter "
+                 "than filter_max_depth_error: a floor or wall one other frame sees well "
+                 "(docs/method.md section 2.9). 0 = at least filter_min_num_consistent sources, "
+                 "as COLMAP.");
   MSP_ADD_OPTION(t, *m, geom_consistency_depth_error,
                  "Geometric passes measure a source's disagreement with a pixel's point in depth "
                  "instead of reprojected pixels: this share of the depth costs what one pixel "

@@ -147,6 +147,9 @@ struct MspStereoOptions {
   // The final filter's geometric test: a source agrees when its depth map holds the pixel's point
   // within this relative depth; 0 = COLMAP's reprojection error in pixels.
   double filter_max_depth_error = 0.01;
+  // The final filter also keeps a pixel one source alone confirms with the depth within this
+  // relative error; 0 = at least filter_min_num_consistent sources, as COLMAP.
+  double filter_single_view_depth_error = 0.005;
   // Geometric passes measure a source's disagreement in depth: this share of the depth costs what
   // one pixel of reprojection error does; 0 = COLMAP's reprojection error in pixels.
   double geom_consistency_depth_error = 0.01;

@@ -573,6 +573,15 @@ class PassRunner {
     return filter;
   }
 
+  // The output filter as the written maps use it: also keeping a pixel one
+  // source vouches for alone. The passes' confirmed pixels (planar prior,
+  // consensus planes) stay those of OutputFilter.
+  core::FilterParams MapFilter(const core::PassParams& params) const {
+    core::FilterParams filter = OutputFilter(params);
+    filter.single_view_max_depth_error = static_cast<float>(msp_.filter_single_view_depth_error);
+    return filter;
+  }
+
   // The finest (or the coarsest) layer of view `ref`'s mask files at the
   // size of `params`' state; empty without mask files.
   std::vector<int32_t> MaskRegions(int ref, const core::PassParams& params,
@@ -630,7 +639,7 @@ class PassRunner {
       sink_.Write(problem.ref, "photometric", depth, normal);
       return;
     }
-    const core::FilterParams filter = OutputFilter(params);
+    const core::FilterParams filter = MapFilter(params);
     DenseMap stages;
     ExtractMaps(params, pm_.filter ? &filter : nullptr, threads_, &depth, &normal,
                 pass.map_previews ? &stages : nullptr);

@@ -117,7 +117,7 @@ void ExtractMaps(const core::PassParams& params, const core::FilterParams* filte
       stages->At(row, col, 1) = has_plane ? h.depth : 0.0f;
       kept = stage == core::kStageKept;
     } else if (has_plane && filter != nullptr) {
-      kept = core::CountConsistentViews(params, *filter, col, row) >= filter->min_num_consistent;
+      kept = core::FilterKeeps(params, *filter, col, row);
     }
     if (!kept) return;
     const core::Vec3 n = core::Normalized(core::FaceCamera(params.ref_camera, col, row, h.normal));

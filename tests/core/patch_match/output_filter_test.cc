@@ -258,6 +258,47 @@ TEST(OutputFilter, DepthTestCountsTheSourcesWithinTheRelativeError) {
   EXPECT_EQ(CountAgreeingViews(p, f, kCol, kRow), 0);
 }
 
+// One source vouches alone when every test passes and its depth map agrees
+// within single_view_max_depth_error, tighter than the two-view test: a
+// source 0.2 % off keeps the pixel with the other 20 % off; one 0.8 % off
+// (within the two-view 1 %) does not; nor does an NCC no view reaches, nor a
+// photometric pass, which has no depth maps to agree.
+TEST(OutputFilter, OneSourceWithinTheTightErrorKeepsThePixel) {
+  test::PlaneScene s;
+  MakeThreeViewScene(&s);
+  PassParams& p = s.params;
+  p.num_src = 2;  // the wide views
+  const Camera& cam0 = p.src[0].camera;
+  const Camera& cam1 = p.src[1].camera;
+  const std::vector<float> close0 = test::PlaneDepthMap(cam0, 1.002f * kDepth);
+  const std::vector<float> loose0 = test::PlaneDepthMap(cam0, 1.008f * kDepth);
+  const std::vector<float> deeper1 = test::PlaneDepthMap(cam1, 1.2f * kDepth);
+  p.src[0].depth = ImageView{close0.data(), cam0.width, cam0.height, cam0.width};
+  p.src[1].depth = ImageView{deeper1.data(), cam1.width, cam1.height, cam1.width};
+  p.geometric = 1;
+  FilterParams f = DefaultFilter();
+  f.max_depth_error = 0.01f;
+  ASSERT_EQ(CountConsistentViews(p, f, kCol, kRow), 1);
+  EXPECT_FALSE(FilterKeeps(p, f, kCol, kRow));  // off: two sources, as COLMAP
+  EXPECT_EQ(FilterStage(p, f, kCol, kRow), kStageFilterGeometric);
+  f.single_view_max_depth_error = 0.005f;
+  EXPECT_TRUE(FilterKeeps(p, f, kCol, kRow));
+  EXPECT_EQ(FilterStage(p, f, kCol, kRow), kStageKept);
+  p.src[0].depth = ImageView{loose0.data(), cam0.width, cam0.height, cam0.width};
+  ASSERT_EQ(CountConsistentViews(p, f, kCol, kRow), 1);
+  EXPECT_FALSE(FilterKeeps(p, f, kCol, kRow));
+  EXPECT_EQ(FilterStage(p, f, kCol, kRow), kStageFilterGeometric);
+  p.src[0].depth = ImageView{close0.data(), cam0.width, cam0.height, cam0.width};
+  f.min_ncc = 2.0f;  // the vouching source must pass the NCC test too
+  EXPECT_FALSE(FilterKeeps(p, f, kCol, kRow));
+  f.min_ncc = DefaultFilter().min_ncc;
+  p.num_src = 1;  // one source in a photometric pass: one view is not enough
+  p.geometric = 0;
+  ASSERT_EQ(CountConsistentViews(p, f, kCol, kRow), 1);
+  EXPECT_FALSE(FilterKeeps(p, f, kCol, kRow));
+  EXPECT_NE(FilterStage(p, f, kCol, kRow), kStageKept);
+}
+
 }  // namespace
 }  // namespace core
 }  // namespace msp

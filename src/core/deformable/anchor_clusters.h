@@ -131,7 +131,7 @@ struct AnchorClusters {
 MSP_HD void ClusterAnchors(const AnchorSet& anchors, int col, int row, const ClusterParams& params,
                            AnchorClusters* out) {
   const int n = anchors.count < kMaxKeptAnchors ? anchors.count : kMaxKeptAnchors;
-  float x[kMaxKeptAnchors], y[kMaxKeptAnchors];
+  float x[kMaxKeptAnchors] = {}, y[kMaxKeptAnchors] = {};  // zeroed: silences a false warning
   for (int k = 0; k < n; ++k) {
     x[k] = static_cast<float>(anchors.cols[k]);
     y[k] = static_cast<float>(anchors.rows[k]);

@@ -21,6 +21,9 @@ struct FilterParams {
   // > 0: a source agrees when its depth map holds the pixel's point within
   // this relative depth (DepthDisagreement), instead of the reprojection test.
   float max_depth_error = 0.0f;
+  // > 0, in geometric passes: a pixel is also kept when a single source passes
+  // every test with the depth agreeing within this (tighter) relative error.
+  float single_view_max_depth_error = 0.0f;
   // 1: in geometric passes a weakly textured pixel (window_texture.h), whose
   // NCC is noise, counts the views that agree geometrically, without the NCC test.
   int textureless_by_geometry = 0;
@@ -107,6 +110,26 @@ MSP_HD int CountConsistentViews(const PassParams& p, const FilterParams& f, int 
   return CountPassingViews(p, f, PrepareFilterPixel(p, f, col, row), col, row);
 }
 
+// Whether one source alone vouches for the prepared pixel `q`: it passes
+// every test with its depth map agreeing within single_view_max_depth_error.
+// A weakly textured floor or wall seen well by one other frame only is as
+// right as one two frames confirm, if the agreement is tight enough
+// (docs/method.md section 2.9).
+MSP_HD bool OneViewVouches(const PassParams& p, const FilterParams& f, const FilterPixel& q, int col,
+                           int row) {
+  if (!(f.single_view_max_depth_error > 0.0f && p.geometric)) return false;
+  FilterParams strict = f;
+  strict.max_depth_error = f.single_view_max_depth_error;
+  return CountPassingViews(p, strict, q, col, row) >= 1;
+}
+
+// The filter's verdict: enough consistent views, or one that vouches alone.
+MSP_HD bool FilterKeeps(const PassParams& p, const FilterParams& f, int col, int row) {
+  const FilterPixel q = PrepareFilterPixel(p, f, col, row);
+  return CountPassingViews(p, f, q, col, row) >= f.min_num_consistent ||
+         OneViewVouches(p, f, q, col, row);
+}
+
 // Number of sources whose depth maps agree with the pixel's depth (the
 // filter's geometric test), at a triangulation angle of at least
 // min_triangulation_angle (geometric passes; 0 otherwise): the other views'
@@ -130,7 +153,7 @@ MSP_HD int FilterStage(const PassParams& p, const FilterParams& f, int col, int 
     no_geometric += t.angle && t.photometric ? 1 : 0;
   }
   const int n = f.min_num_consistent;
-  if (all >= n) return kStageKept;
+  if (all >= n || OneViewVouches(p, f, q, col, row)) return kStageKept;
   if (no_angle >= n) return kStageFilterAngle;
   if (no_photometric >= n) return kStageFilterPhotometric;
   if (no_geometric >= n) return kStageFilterGeometric;

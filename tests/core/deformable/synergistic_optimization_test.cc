@@ -248,7 +248,9 @@ TEST(SynergisticOptimization, APerturbationResamplesOneLane) {
         moved = moved || after.x[t][c] != before.x[t][c] || after.y[t][c] != before.y[t][c];
       }
       moved_lanes += moved ? 1 : 0;
-      if (LaneLayout(next, c) == LaneLayout(in_use, c)) EXPECT_FALSE(moved) << "lane " << c;
+      if (LaneLayout(next, c) == LaneLayout(in_use, c)) {
+        EXPECT_FALSE(moved) << "lane " << c;
+      }
     }
     EXPECT_EQ(changed_lanes, 1) << "perturbation " << j;
     EXPECT_LE(moved_lanes, 1);
@@ -275,7 +277,9 @@ TEST(SynergisticOptimization, LocalSearchKeepsTheLeastObjectiveAmongTheOneInUseA
     scene.Optimize(sp, &solution, &candidate);
     EXPECT_EQ(solution, c.seed[c.least]);
     EXPECT_LE(c.objective[c.least], c.objective[0]);
-    if (solution != in_use) EXPECT_LT(c.objective[c.least], c.objective[0]);
+    if (solution != in_use) {
+      EXPECT_LT(c.objective[c.least], c.objective[0]);
+    }
     moves += solution != in_use ? 1 : 0;
   }
   EXPECT_GT(moves, 0);  // the search does move on this scene

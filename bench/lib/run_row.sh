@@ -19,11 +19,12 @@ ablation_init() {
 }
 
 # unknown_options OPTION...: the option names (--Section.name) among the
-# arguments that $bin/msp_stereo does not accept, one a line; so that a table
-# stops before its first run rather than after an hour.
+# arguments that $bin/msp_stereo does not accept (--help_all: the advanced ones
+# too), one a line; so that a table stops before its first run rather than
+# after an hour.
 unknown_options() {
   local known
-  known=$("$bin/msp_stereo" --help | grep -oE '^  --[A-Za-z_.]+' | sed 's/^ *//')
+  known=$("$bin/msp_stereo" --help_all | grep -oE '^  --[A-Za-z_.]+' | sed 's/^ *//')
   local arg
   for arg in "$@"; do
     case "$arg" in

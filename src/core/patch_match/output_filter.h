@@ -110,17 +110,23 @@ MSP_HD int CountConsistentViews(const PassParams& p, const FilterParams& f, int 
   return CountPassingViews(p, f, PrepareFilterPixel(p, f, col, row), col, row);
 }
 
-// Whether one source alone vouches for the prepared pixel `q`: it passes
-// every test with its depth map agreeing within single_view_max_depth_error.
-// A weakly textured floor or wall seen well by one other frame only is as
-// right as one two frames confirm, if the agreement is tight enough
-// (docs/method.md section 2.9).
+// Whether one source alone vouches for the prepared pixel `q`: it has a depth
+// map, and passes every test with that map agreeing within
+// single_view_max_depth_error. A weakly textured floor or wall seen well by
+// one other frame only is as right as one two frames confirm, if the
+// agreement is tight enough (docs/method.md section 2.9). A source without a
+// depth map (not run yet) agrees by default in the count, so it cannot vouch.
 MSP_HD bool OneViewVouches(const PassParams& p, const FilterParams& f, const FilterPixel& q, int col,
                            int row) {
-  if (!(f.single_view_max_depth_error > 0.0f && p.geometric)) return false;
+  if (!(f.single_view_max_depth_error > 0.0f && p.geometric && q.valid)) return false;
   FilterParams strict = f;
   strict.max_depth_error = f.single_view_max_depth_error;
-  return CountPassingViews(p, strict, q, col, row) >= 1;
+  for (int j = 0; j < p.num_src; ++j) {
+    if (p.src[j].depth.data != nullptr && TestView(p, strict, q, j, col, row, false).All()) {
+      return true;
+    }
+  }
+  return false;
 }
 
 // The filter's verdict: enough consistent views, or one that vouches alone.

@@ -300,6 +300,31 @@ TEST(OutputFilter, OneSourceWithinTheTightErrorKeepsThePixel) {
   EXPECT_NE(FilterStage(p, f, kCol, kRow), kStageKept);
 }
 
+// A source without a depth map (its image not run yet) counts as agreeing in
+// the two-view test, but it does not vouch alone: with both wide views' maps
+// 20 % off, the near view 2 (no map, let in by a zero angle) keeps nothing.
+TEST(OutputFilter, ASourceWithoutADepthMapDoesNotVouch) {
+  test::PlaneScene s;
+  MakeThreeViewScene(&s);
+  PassParams& p = s.params;
+  p.geometric = 1;
+  const std::vector<float> deeper0 = test::PlaneDepthMap(p.src[0].camera, 1.2f * kDepth);
+  const std::vector<float> deeper1 = test::PlaneDepthMap(p.src[1].camera, 1.2f * kDepth);
+  SetSourceDepth(&p, 0, deeper0);
+  SetSourceDepth(&p, 1, deeper1);
+  FilterParams f = DefaultFilter();
+  f.min_triangulation_angle = 0.0f;
+  f.max_depth_error = 0.01f;
+  f.single_view_max_depth_error = 0.005f;
+  ASSERT_EQ(CountConsistentViews(p, f, kCol, kRow), 1);  // view 2 alone
+  EXPECT_FALSE(FilterKeeps(p, f, kCol, kRow));
+  EXPECT_NE(FilterStage(p, f, kCol, kRow), kStageKept);
+  // With view 0's map true, view 0 vouches.
+  const std::vector<float> truth0 = test::PlaneDepthMap(p.src[0].camera, kDepth);
+  SetSourceDepth(&p, 0, truth0);
+  EXPECT_TRUE(FilterKeeps(p, f, kCol, kRow));
+}
+
 }  // namespace
 }  // namespace core
 }  // namespace msp

@@ -116,8 +116,8 @@ MSP_HD int CountConsistentViews(const PassParams& p, const FilterParams& f, int 
 // one other frame only is as right as one two frames confirm, if the
 // agreement is tight enough (docs/method.md section 2.9). A source without a
 // depth map (not run yet) agrees by default in the count, so it cannot vouch.
-MSP_HD bool OneViewVouches(const PassParams& p, const FilterParams& f, const FilterPixel& q, int col,
-                           int row) {
+MSP_HD bool OneViewVouches(const PassParams& p, const FilterParams& f, const FilterPixel& q,
+                           int col, int row) {
   if (!(f.single_view_max_depth_error > 0.0f && p.geometric && q.valid)) return false;
   FilterParams strict = f;
   strict.max_depth_error = f.single_view_max_depth_error;

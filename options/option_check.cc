@@ -128,6 +128,7 @@ void CheckMspStereoOptions(const MspStereoOptions& o) {
                   Interval::kClosed, " (smaller images have too few pixels to match)");
   MSP_CHECK_RANGE(o, advanced_iterations, 1, 3);
   MSP_CHECK_NON_NEGATIVE(o, advanced_deformable_max_image_size);
+  MSP_CHECK_NON_NEGATIVE(o, advanced_restoring_image_size);
   MSP_CHECK_RANGE(o, advanced_finest_iterations, 1, 3);
   MSP_CHECK_RANGE(o, black_level, 0.0, 1.0);
   MSP_CHECK_RANGE(o, filter_max_depth_error, 0.0, 1.0);

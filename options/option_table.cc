@@ -369,6 +369,10 @@ void DefineMspStereoAdvancedOptions(MspStereoOptions* m, OptionVisitor* t) {
   MSP_ADD_OPTION(t, *m, advanced_finest_geometric_passes,
                  "Geometric passes in the finest round when there are several rounds (1..3): the "
                  "coarser rounds made the maps consistent, the finest restores detail.");
+  MSP_ADD_OPTION(t, *m, advanced_restoring_image_size,
+                 "Rounds after the first whose images' larger side is at least this many pixels "
+                 "restore detail as the finest round does (its --MspStereo.advanced_finest_* "
+                 "schedule); 0 = the finest round only.");
   MSP_ADD_OPTION(t, *m, advanced_deformable_max_image_size,
                  "Rounds whose images' larger side exceeds this many pixels run the conventional "
                  "sweeps instead of the deformable step (at 640x480 with coarsest_image_size 80: "

@@ -22,7 +22,8 @@ namespace {
 // `num_passes` (passes of this round) and `coarser_passes` (of the round
 // before, 0 in the first).
 Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, int round,
-              int num_rounds, int index, int num_passes, int coarser_passes, int image_size) {
+              int num_rounds, int index, int num_passes, int coarser_passes, int image_size,
+              bool restoring) {
   Pass pass;
   pass.round = round;
   pass.num_rounds = num_rounds;
@@ -35,10 +36,9 @@ Pass MakePass(const PatchMatchStereoOptions& pm, const MspStereoOptions& msp, in
       first ? PassStart::kRandom : (index == 0 ? PassStart::kUpsampled : PassStart::kPrevious);
   const bool last_round = round == num_rounds - 1;
   // The first pass has no planes to classify: it runs the conventional sweeps.
-  // The finest round of a pyramid restores detail on planes the coarser
+  // A restoring round (RestoringRound) restores detail on planes the coarser
   // rounds found, where pixels are dearest: fewer iterations, and the
   // conventional sweeps unless finest_deformable.
-  const bool restoring = round > 0 && last_round;
   const bool small_enough = msp.advanced_deformable_max_image_size == 0 ||
                             image_size <= msp.advanced_deformable_max_image_size;
   const bool round_deformable =
@@ -96,6 +96,12 @@ const char* OutputName(PassOutput output) {
 
 }  // namespace
 
+bool RestoringRound(const MspStereoOptions& msp, int round, int num_rounds, int image_size) {
+  if (round == 0) return false;
+  return round == num_rounds - 1 ||
+         (msp.advanced_restoring_image_size > 0 && image_size >= msp.advanced_restoring_image_size);
+}
+
 bool SegmentationPriorEnabled(const MspStereoOptions& msp) {
   return msp.deformable && msp.segmentation_prior;
 }
@@ -106,14 +112,14 @@ std::vector<Pass> BuildPassSchedule(const PatchMatchStereoOptions& pm, const Msp
   std::vector<Pass> schedule;
   int coarser_passes = 0;
   for (int round = 0; round < num_rounds; ++round) {
-    const bool restoring = round > 0 && round == num_rounds - 1;
+    const int image_size = std::max(max_width, max_height) >> (num_rounds - 1 - round);
+    const bool restoring = RestoringRound(msp, round, num_rounds, image_size);
     const int geometric =
         restoring ? msp.advanced_finest_geometric_passes : msp.advanced_geometric_passes;
     const int num_passes = 1 + (pm.geom_consistency ? geometric : 0);
-    const int image_size = std::max(max_width, max_height) >> (num_rounds - 1 - round);
     for (int index = 0; index < num_passes; ++index) {
-      schedule.push_back(
-          MakePass(pm, msp, round, num_rounds, index, num_passes, coarser_passes, image_size));
+      schedule.push_back(MakePass(pm, msp, round, num_rounds, index, num_passes, coarser_passes,
+                                  image_size, restoring));
     }
     coarser_passes = num_passes;
   }

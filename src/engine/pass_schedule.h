@@ -19,6 +19,12 @@ namespace msp {
 // Number of halvings until the larger side is <= coarsest_size (0 when it already is).
 int NumHalvings(int width, int height, int coarsest_size);
 
+// Whether round `round` of `num_rounds` (its images' larger side `image_size`)
+// restores detail on the planes the coarser rounds found, with the
+// advanced_finest_* schedule: the finest round of several, and every round
+// after the first at least advanced_restoring_image_size pixels large.
+bool RestoringRound(const MspStereoOptions& msp, int round, int num_rounds, int image_size);
+
 // APD schedule: 3 red-black iterations per pass, at most 3 geometric passes
 // per round (--MspStereo.advanced_geometric_passes, finest_geometric_passes).
 constexpr int kIterationsPerPass = 3;

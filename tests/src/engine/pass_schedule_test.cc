@@ -175,6 +175,33 @@ TEST(PassSchedule, PassesAndIterationsPerRound) {
 
 // Rounds above deformable_max_image_size run the conventional sweeps, and
 // the prior (which confines anchors) runs only after deformable passes.
+// With advanced_restoring_image_size, every round after the first at least
+// that large restores detail as the finest round does; the first round
+// never does, and 0 leaves the finest round alone.
+TEST(PassSchedule, RoundsFromAnImageSizeRestoreDetail) {
+  MspStereoOptions msp;
+  // 1536x1024: rounds at 48, 96, 192, 384, 768 and 1536 px.
+  EXPECT_FALSE(RestoringRound(msp, 4, 6, 768));
+  EXPECT_TRUE(RestoringRound(msp, 5, 6, 1536));
+  msp.advanced_restoring_image_size = 600;
+  const std::vector<Pass> schedule = BuildPassSchedule(PatchMatchStereoOptions(), msp, 1536, 1024);
+  ASSERT_EQ(schedule.size(), 6u * 4u);
+  for (const Pass& pass : schedule) {
+    const bool restoring = pass.round >= 4;
+    EXPECT_EQ(pass.iterations, restoring ? 1 : 3) << ToString(pass);
+    EXPECT_EQ(pass.weighted_views_only, restoring) << ToString(pass);
+    EXPECT_EQ(pass.hold_weak_texture, restoring) << ToString(pass);
+  }
+  EXPECT_EQ(schedule[5 * 4].output, PassOutput::kUnfiltered);  // the finest round writes
+  EXPECT_EQ(schedule[4 * 4].output, PassOutput::kNone);
+  msp.advanced_restoring_image_size = 1;  // never the first round
+  EXPECT_FALSE(RestoringRound(msp, 0, 6, 48));
+  // At 640x480 only the finest round is 600 px or larger: the schedule is as before.
+  msp.advanced_restoring_image_size = 600;
+  EXPECT_EQ(ToString(BuildPassSchedule(PatchMatchStereoOptions(), msp, 640, 480)),
+            ToString(BuildPassSchedule(PatchMatchStereoOptions(), MspStereoOptions(), 640, 480)));
+}
+
 TEST(PassSchedule, DeformableOnlyUpToAnImageSize) {
   MspStereoOptions msp = WithDeformable();
   msp.advanced_deformable_max_image_size = 160;

@@ -192,8 +192,9 @@ struct MspStereoOptions {
   int advanced_geometric_passes = 3;
   int advanced_finest_geometric_passes = 3;
   // Rounds after the first whose images' larger side is at least this many pixels restore detail
-  // as the finest round does (the advanced_finest_* schedule); 0 = the finest round only.
-  int advanced_restoring_image_size = 0;
+  // as the finest round does (the advanced_finest_* schedule); 0 = the finest round only. The
+  // planes are found up to 300-599 px, where a 640x480 run finds them (docs/method.md 1.2).
+  int advanced_restoring_image_size = 600;
   // Disparity pixels each side of the local refinement's sweep in the finest round of several
   // (1..5; the coarser rounds sweep 5): on a flat cost a wider sweep lets the noise move the depth.
   int advanced_finest_refine_radius = 2;

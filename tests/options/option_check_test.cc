@@ -112,6 +112,8 @@ TEST(OptionCheck, EveryOutOfRangeValueNamesOptionValueAndRange) {
        [](auto* o) { o->msp.advanced_reliable_single_cost = -0.1; }},
       {"MspStereo.advanced_reliable_min_spread", "3", "[0, 2]",
        [](auto* o) { o->msp.advanced_reliable_min_spread = 3; }},
+      {"MspStereo.advanced_restoring_image_size", "-1", ">= 0",
+       [](auto* o) { o->msp.advanced_restoring_image_size = -1; }},
       {"MspStereo.advanced_anchor_max_distance", "1", "[2, 65536]",
        [](auto* o) { o->msp.advanced_anchor_max_distance = 1; }},
       {"MspStereo.advanced_equidistribution_iterations", "0", "[1, 3]",

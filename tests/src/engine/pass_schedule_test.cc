@@ -175,15 +175,13 @@ TEST(PassSchedule, PassesAndIterationsPerRound) {
 
 // Rounds above deformable_max_image_size run the conventional sweeps, and
 // the prior (which confines anchors) runs only after deformable passes.
-// With advanced_restoring_image_size, every round after the first at least
-// that large restores detail as the finest round does; the first round
+// With advanced_restoring_image_size (600), every round after the first at
+// least that large restores detail as the finest round does; the first round
 // never does, and 0 leaves the finest round alone.
 TEST(PassSchedule, RoundsFromAnImageSizeRestoreDetail) {
   MspStereoOptions msp;
+  ASSERT_EQ(msp.advanced_restoring_image_size, 600);
   // 1536x1024: rounds at 48, 96, 192, 384, 768 and 1536 px.
-  EXPECT_FALSE(RestoringRound(msp, 4, 6, 768));
-  EXPECT_TRUE(RestoringRound(msp, 5, 6, 1536));
-  msp.advanced_restoring_image_size = 600;
   const std::vector<Pass> schedule = BuildPassSchedule(PatchMatchStereoOptions(), msp, 1536, 1024);
   ASSERT_EQ(schedule.size(), 6u * 4u);
   for (const Pass& pass : schedule) {
@@ -196,8 +194,11 @@ TEST(PassSchedule, RoundsFromAnImageSizeRestoreDetail) {
   EXPECT_EQ(schedule[4 * 4].output, PassOutput::kNone);
   msp.advanced_restoring_image_size = 1;  // never the first round
   EXPECT_FALSE(RestoringRound(msp, 0, 6, 48));
-  // At 640x480 only the finest round is 600 px or larger: the schedule is as before.
-  msp.advanced_restoring_image_size = 600;
+  EXPECT_TRUE(RestoringRound(msp, 1, 6, 96));
+  msp.advanced_restoring_image_size = 0;  // the finest round only
+  EXPECT_FALSE(RestoringRound(msp, 4, 6, 768));
+  EXPECT_TRUE(RestoringRound(msp, 5, 6, 1536));
+  // At 640x480 only the finest round is 600 px or larger: the schedule is as with 0.
   EXPECT_EQ(ToString(BuildPassSchedule(PatchMatchStereoOptions(), msp, 640, 480)),
             ToString(BuildPassSchedule(PatchMatchStereoOptions(), MspStereoOptions(), 640, 480)));
 }

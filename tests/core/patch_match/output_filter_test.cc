@@ -49,6 +49,21 @@ void SetSourceDepth(PassParams* p, int j, const std::vector<float>& depth) {
   p->src[j].depth = ImageView{depth.data(), c.width, c.height, c.width};
 }
 
+// Both wide sources' depth maps: their planes at scale0 / scale1 times the
+// true depth, set for as long as the object lives.
+struct WideSourceDepths {
+  WideSourceDepths(PassParams* p, float scale0, float scale1)
+      : depth0(test::PlaneDepthMap(p->src[0].camera, scale0 * kDepth)),
+        depth1(test::PlaneDepthMap(p->src[1].camera, scale1 * kDepth)) {
+    SetSourceDepth(p, 0, depth0);
+    SetSourceDepth(p, 1, depth1);
+  }
+  WideSourceDepths(const WideSourceDepths&) = delete;
+  WideSourceDepths& operator=(const WideSourceDepths&) = delete;
+  const std::vector<float> depth0;
+  const std::vector<float> depth1;
+};
+
 TEST(OutputFilter, TriangulationAngleIsTheAngleBetweenTheRays) {
   EXPECT_NEAR(TriangulationAngle(Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 0, 1}), 45.0f * kDegrees,
               1e-6f);
@@ -308,10 +323,7 @@ TEST(OutputFilter, ASourceWithoutADepthMapDoesNotVouch) {
   MakeThreeViewScene(&s);
   PassParams& p = s.params;
   p.geometric = 1;
-  const std::vector<float> deeper0 = test::PlaneDepthMap(p.src[0].camera, 1.2f * kDepth);
-  const std::vector<float> deeper1 = test::PlaneDepthMap(p.src[1].camera, 1.2f * kDepth);
-  SetSourceDepth(&p, 0, deeper0);
-  SetSourceDepth(&p, 1, deeper1);
+  const WideSourceDepths deeper(&p, 1.2f, 1.2f);
   FilterParams f = DefaultFilter();
   f.min_triangulation_angle = 0.0f;
   f.max_depth_error = 0.01f;

@@ -371,8 +371,9 @@ void DefineMspStereoAdvancedOptions(MspStereoOptions* m, OptionVisitor* t) {
                  "coarser rounds made the maps consistent, the finest restores detail.");
   MSP_ADD_OPTION(t, *m, advanced_restoring_image_size,
                  "Rounds after the first whose images' larger side is at least this many pixels "
-                 "restore detail as the finest round does (its --MspStereo.advanced_finest_* "
-                 "schedule): the planes are found below this size, as in a 640x480 run (at "
+                 "restore detail as the finest round does: every option that names the finest "
+                 "round (--MspStereo.advanced_finest_*, advanced_weighted_views_only) "
+                 "applies to them. The planes are found below this size, as in a 640x480 run (at "
                  "1536x1024 the rounds at 768 and 1536 px restore). 0 = the finest round only.");
   MSP_ADD_OPTION(t, *m, advanced_deformable_max_image_size,
                  "Rounds whose images' larger side exceeds this many pixels run the conventional "

@@ -60,8 +60,7 @@ void CheckImageHeader(const std::string& path, int width, int height) {
 
 }  // namespace
 
-void LoadViewImage(const std::string& path, int width, int height, int new_width, int new_height,
-                   DenseMap* gray, DenseMap* color) {
+cv::Mat DecodeViewImage(const std::string& path, int width, int height) {
   CheckImageHeader(path, width, height);
   cv::Mat bgr;
   try {
@@ -75,10 +74,15 @@ void LoadViewImage(const std::string& path, int width, int height, int new_width
   if (bgr.cols != width || bgr.rows != height) {
     ThrowSizeMismatch(path, bgr.cols, bgr.rows, width, height);
   }
+  return bgr;
+}
+
+void ConvertViewImage(const cv::Mat& bgr, int new_width, int new_height, DenseMap* gray,
+                      DenseMap* color) {
   // Convert to float before resizing so neither step rounds to 8 bits.
   cv::Mat bgr_float;
   bgr.convertTo(bgr_float, CV_32FC3, kInv255);
-  if (new_width != width || new_height != height) {
+  if (new_width != bgr.cols || new_height != bgr.rows) {
     cv::Mat resized;
     cv::resize(bgr_float, resized, cv::Size(new_width, new_height), 0.0, 0.0, cv::INTER_AREA);
     bgr_float = resized;
@@ -88,11 +92,17 @@ void LoadViewImage(const std::string& path, int width, int height, int new_width
   cv::cvtColor(bgr_float, gray_float, cv::COLOR_BGR2GRAY);
   *gray = DenseMap(new_width, new_height, 1);
   CopyPlane(gray_float, gray->Plane(0));
+  if (color == nullptr) return;
 
   std::vector<cv::Mat> bgr_planes;
   cv::split(bgr_float, bgr_planes);
   *color = DenseMap(new_width, new_height, 3);
   for (int c = 0; c < 3; ++c) CopyPlane(bgr_planes[2 - c], color->Plane(c));  // BGR -> RGB
+}
+
+void LoadViewImage(const std::string& path, int width, int height, int new_width, int new_height,
+                   DenseMap* gray, DenseMap* color) {
+  ConvertViewImage(DecodeViewImage(path, width, height), new_width, new_height, gray, color);
 }
 
 }  // namespace msp

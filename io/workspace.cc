@@ -210,7 +210,10 @@ void DropObservations(SparseModel* model) {
 // Cameras of every view at the working resolution; images of used views.
 // Every used image is read here, so that a bad one stops the run before it
 // starts, but only those within `image_budget_bytes` stay in memory; the
-// others are read again by View::load_images when a problem needs them.
+// others are read again by View::load_images when a problem needs them. An
+// image at its own size stays as its decoded 8-bit pixels (3 bytes a pixel),
+// converted to the float planes (16) by load_images each time; a downsized
+// one stays as the planes, which its 8-bit pixels cannot give.
 void LoadViews(const std::vector<Problem>& problems, int max_image_size, size_t image_budget_bytes,
                Workspace* ws) {
   size_t kept_bytes = 0;
@@ -236,22 +239,26 @@ void LoadViews(const std::vector<Problem>& problems, int max_image_size, size_t 
     int new_width, new_height;
     DownsizedSize(width, height, max_image_size, &new_width, &new_height);
     ResizeCamera(new_width, new_height, &view.camera);
-    if (used[i]) {
-      // Reading hundreds of images takes a while: Ctrl-C need not wait for it.
-      ThrowIfStopRequested();
-      const std::string path = JoinPaths(JoinPaths(ws->path, "images"), view.name);
-      view.load_images = [path, width, height, new_width, new_height](DenseMap* gray,
-                                                                      DenseMap* color) {
-        LoadViewImage(path, width, height, new_width, new_height, gray, color);
+    if (!used[i]) continue;
+    // Reading hundreds of images takes a while: Ctrl-C need not wait for it.
+    ThrowIfStopRequested();
+    const std::string path = JoinPaths(JoinPaths(ws->path, "images"), view.name);
+    view.load_images = [path, width, height, new_width, new_height](DenseMap* gray,
+                                                                    DenseMap* color) {
+      LoadViewImage(path, width, height, new_width, new_height, gray, color);
+    };
+    const cv::Mat decoded = DecodeViewImage(path, width, height);
+    const bool downsized = new_width != width || new_height != height;
+    const size_t bytes = downsized ? size_t{16} * new_width * new_height
+                                   : decoded.total() * decoded.elemSize();
+    if (kept_bytes + bytes > image_budget_bytes) continue;
+    kept_bytes += bytes;
+    if (downsized) {
+      ConvertViewImage(decoded, new_width, new_height, &view.gray, &view.color);
+    } else {
+      view.load_images = [decoded](DenseMap* gray, DenseMap* color) {
+        ConvertViewImage(decoded, decoded.cols, decoded.rows, gray, color);
       };
-      view.load_images(&view.gray, &view.color);
-      const size_t bytes = (view.gray.data.size() + view.color.data.size()) * sizeof(float);
-      if (kept_bytes + bytes > image_budget_bytes) {
-        view.gray = DenseMap();
-        view.color = DenseMap();
-      } else {
-        kept_bytes += bytes;
-      }
     }
   }
 }

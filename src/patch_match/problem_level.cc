@@ -32,7 +32,7 @@ Level BuildLevel(const std::vector<View>& views, const std::vector<int>& ids, in
     // Images beyond the cache's share live only for this call.
     DenseMap gray, color;
     const bool in_memory = !view.gray.Empty() || !view.load_images;
-    if (!in_memory) view.load_images(&gray, &color);
+    if (!in_memory) view.load_images(&gray, with_color ? &color : nullptr);
     const DenseMap& full_gray = in_memory ? view.gray : gray;
     const DenseMap& full_color = in_memory ? view.color : color;
     if (with_color && (full_color.channels != 3 || full_color.width != full_gray.width ||

@@ -24,6 +24,16 @@ constexpr int kWidth = 32;
 constexpr int kHeight = 24;
 const char* const kNames[] = {"sub/img0.png", "img1.png", "sub/deeper/img2.png"};
 
+// The grey and colour planes a problem gets from `view`: its own, or what
+// its load_images gives.
+View ImagesOf(const View& view) {
+  View images;
+  images.gray = view.gray;
+  images.color = view.color;
+  if (images.gray.Empty() && view.load_images) view.load_images(&images.gray, &images.color);
+  return images;
+}
+
 // A three-view workspace as `colmap image_undistorter` would leave it: a
 // binary model, textured PNGs (one name per folder depth) and a cfg file.
 class TinyWorkspace {
@@ -103,8 +113,9 @@ TEST(Workspace, LoadsTinyWorkspace) {
     EXPECT_NEAR(problem.depth_max, 10.7f * 1.25f, 1e-4);
   }
   for (int i = 0; i < 3; ++i) {
-    const View& view = ws.views[i];
-    EXPECT_EQ(view.name, kNames[i]);
+    EXPECT_EQ(ws.views[i].name, kNames[i]);
+    View view = ImagesOf(ws.views[i]);
+    view.camera = ws.views[i].camera;
     EXPECT_EQ(view.camera.width, kWidth);
     EXPECT_EQ(view.camera.height, kHeight);
     EXPECT_FLOAT_EQ(view.camera.fx, 30.0f);
@@ -150,32 +161,57 @@ TEST(Workspace, TextModelAndCustomConfigPath) {
   EXPECT_EQ(ws.problems[0].srcs, (std::vector<int>{0}));
   // Views no problem uses keep their camera but load no image.
   EXPECT_TRUE(ws.views[2].gray.Empty());
+  EXPECT_FALSE(ws.views[2].load_images);
   EXPECT_EQ(ws.views[2].camera.width, kWidth);
 }
 
-// Images beyond the image share of cache_size (a quarter of it) are read at
-// the start, to check them, and then dropped: load_images reads them again.
+// Every used image is read at the start, to check it. Those within the
+// image share of cache_size (a quarter of it) stay in memory: at their own
+// size as their 8-bit pixels (3 bytes a pixel), converted when needed; the
+// others are read again from their files by load_images.
 TEST(Workspace, ImagesBeyondTheCacheShareAreReadAgainOnDemand) {
   TinyWorkspace tiny;
   StereoCommandOptions options = tiny.Options();
   const Workspace kept = LoadWorkspace(options);
-  const double image_bytes = kWidth * kHeight * 4 * sizeof(float);
+  const double image_bytes = kWidth * kHeight * 3;
   options.patch_match.cache_size = 4 * 1.5 * image_bytes / (1024.0 * 1024.0 * 1024.0);
   const Workspace partly = LoadWorkspace(options);
-  EXPECT_FALSE(partly.views[0].gray.Empty());  // the first fits
+  for (int i = 0; i < 3; ++i) tiny.WriteImage(i, kWidth / 2, kHeight / 2);
   for (int i = 0; i < 3; ++i) {
     const View& view = partly.views[i];
     ASSERT_TRUE(view.load_images);
-    EXPECT_EQ(view.gray.Empty(), i > 0);
-    EXPECT_EQ(view.color.Empty(), i > 0);
+    EXPECT_TRUE(view.gray.Empty());
     DenseMap gray, color;
-    view.load_images(&gray, &color);
-    EXPECT_EQ(gray.data, kept.views[i].gray.data);
-    EXPECT_EQ(color.data, kept.views[i].color.data);
+    if (i == 0) {  // the first fits: its files are not read again
+      view.load_images(&gray, &color);
+      EXPECT_EQ(gray.data, ImagesOf(kept.views[i]).gray.data);
+      EXPECT_EQ(color.data, ImagesOf(kept.views[i]).color.data);
+    } else {
+      EXPECT_CONTAINS(InputErrorMessage([&] { view.load_images(&gray, &color); }), kNames[i]);
+    }
   }
-  // A bad image still stops the load, before anything runs.
+  // A bad image stops the load, before anything runs.
   test::WriteRaw(tiny.Path("images/img1.png"), "not a png");
   EXPECT_NE(InputErrorMessage([&] { LoadWorkspace(options); }).find("img1.png"), std::string::npos);
+}
+
+// A downsized image is kept as its float planes, which its 8-bit pixels
+// cannot give; the planes are those of reading the file again.
+TEST(Workspace, DownsizedImagesAreKeptAsTheirPlanes) {
+  TinyWorkspace tiny;
+  StereoCommandOptions options = tiny.Options();
+  options.patch_match.max_image_size = 16;
+  const Workspace ws = LoadWorkspace(options);
+  const View& view = ws.views[1];
+  ASSERT_EQ(view.gray.width, 16);
+  DenseMap gray, color;
+  view.load_images(&gray, &color);
+  EXPECT_EQ(gray.data, view.gray.data);
+  EXPECT_EQ(color.data, view.color.data);
+  // The colour is optional.
+  DenseMap gray_only;
+  view.load_images(&gray_only, nullptr);
+  EXPECT_EQ(gray_only.data, view.gray.data);
 }
 
 TEST(Workspace, MissingWorkspace) {
@@ -356,7 +392,7 @@ TEST(Workspace, MaxImageSizeDownsizes) {
   }
   // No downsizing when the image already fits.
   options.patch_match.max_image_size = 32;
-  EXPECT_EQ(LoadWorkspace(options).views[0].gray.width, 32);
+  EXPECT_EQ(ImagesOf(LoadWorkspace(options).views[0]).gray.width, 32);
 }
 
 // Mask layers of the segmentation prior: a reference view with files gets

@@ -60,7 +60,7 @@ void CheckImageHeader(const std::string& path, int width, int height) {
 
 }  // namespace
 
-cv::Mat DecodeViewImage(const std::string& path, int width, int height) {
+DecodedImage DecodeViewImage(const std::string& path, int width, int height) {
   CheckImageHeader(path, width, height);
   cv::Mat bgr;
   try {
@@ -74,11 +74,19 @@ cv::Mat DecodeViewImage(const std::string& path, int width, int height) {
   if (bgr.cols != width || bgr.rows != height) {
     ThrowSizeMismatch(path, bgr.cols, bgr.rows, width, height);
   }
-  return bgr;
+  DecodedImage image;
+  image.width = width;
+  image.height = height;
+  image.bgr.resize(static_cast<size_t>(width) * height * 3);
+  cv::Mat into(height, width, CV_8UC3, image.bgr.data());
+  bgr.copyTo(into);  // same size and type: writes image.bgr
+  return image;
 }
 
-void ConvertViewImage(const cv::Mat& bgr, int new_width, int new_height, DenseMap* gray,
+void ConvertViewImage(const DecodedImage& image, int new_width, int new_height, DenseMap* gray,
                       DenseMap* color) {
+  if (gray == nullptr && color == nullptr) return;
+  const cv::Mat bgr(image.height, image.width, CV_8UC3, const_cast<uint8_t*>(image.bgr.data()));
   // Convert to float before resizing so neither step rounds to 8 bits.
   cv::Mat bgr_float;
   bgr.convertTo(bgr_float, CV_32FC3, kInv255);
@@ -88,10 +96,12 @@ void ConvertViewImage(const cv::Mat& bgr, int new_width, int new_height, DenseMa
     bgr_float = resized;
   }
 
-  cv::Mat gray_float;
-  cv::cvtColor(bgr_float, gray_float, cv::COLOR_BGR2GRAY);
-  *gray = DenseMap(new_width, new_height, 1);
-  CopyPlane(gray_float, gray->Plane(0));
+  if (gray != nullptr) {
+    cv::Mat gray_float;
+    cv::cvtColor(bgr_float, gray_float, cv::COLOR_BGR2GRAY);
+    *gray = DenseMap(new_width, new_height, 1);
+    CopyPlane(gray_float, gray->Plane(0));
+  }
   if (color == nullptr) return;
 
   std::vector<cv::Mat> bgr_planes;

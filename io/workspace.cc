@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -211,9 +212,11 @@ void DropObservations(SparseModel* model) {
 // Every used image is read here, so that a bad one stops the run before it
 // starts, but only those within `image_budget_bytes` stay in memory; the
 // others are read again by View::load_images when a problem needs them. An
-// image at its own size stays as its decoded 8-bit pixels (3 bytes a pixel),
-// converted to the float planes (16) by load_images each time; a downsized
-// one stays as the planes, which its 8-bit pixels cannot give.
+// image at its own size keeps its grey plane (4 bytes a pixel), which every
+// problem it is in reads, and its decoded 8-bit pixels (3) for the colour
+// plane (12), which only the problems it is the reference of read, and
+// load_images converts; a downsized one keeps both planes, which its 8-bit
+// pixels cannot give.
 void LoadViews(const std::vector<Problem>& problems, int max_image_size, size_t image_budget_bytes,
                Workspace* ws) {
   size_t kept_bytes = 0;
@@ -247,17 +250,18 @@ void LoadViews(const std::vector<Problem>& problems, int max_image_size, size_t 
                                                                     DenseMap* color) {
       LoadViewImage(path, width, height, new_width, new_height, gray, color);
     };
-    const cv::Mat decoded = DecodeViewImage(path, width, height);
+    auto decoded = std::make_shared<const DecodedImage>(DecodeViewImage(path, width, height));
     const bool downsized = new_width != width || new_height != height;
-    const size_t bytes = downsized ? size_t{16} * new_width * new_height
-                                   : decoded.total() * decoded.elemSize();
+    const size_t pixels = static_cast<size_t>(new_width) * new_height;
+    const size_t bytes = downsized ? 16 * pixels : 4 * pixels + decoded->bgr.size();
     if (kept_bytes + bytes > image_budget_bytes) continue;
     kept_bytes += bytes;
     if (downsized) {
-      ConvertViewImage(decoded, new_width, new_height, &view.gray, &view.color);
+      ConvertViewImage(*decoded, new_width, new_height, &view.gray, &view.color);
     } else {
+      ConvertViewImage(*decoded, new_width, new_height, &view.gray, nullptr);
       view.load_images = [decoded](DenseMap* gray, DenseMap* color) {
-        ConvertViewImage(decoded, decoded.cols, decoded.rows, gray, color);
+        ConvertViewImage(*decoded, decoded->width, decoded->height, gray, color);
       };
     }
   }

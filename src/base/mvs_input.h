@@ -18,11 +18,11 @@ struct View {
   core::Camera camera;  // intrinsics scaled to the working resolution
   DenseMap gray;        // 1 channel, values in [0, 1], camera.width x camera.height
   DenseMap color;       // 3 channels RGB in [0, 1], same size (segmentation prior)
-  // Gives gray and color (unless null) when they are empty here: converted
-  // from a smaller form kept in memory, or read again from the image file (a
-  // workspace larger than the image share of --PatchMatchStereo.cache_size
-  // keeps only part of its images in memory). Empty = the images above are
-  // all there is.
+  // Gives gray and color, each unless null, where they are empty here:
+  // converted from a smaller form kept in memory (the colour of an image at
+  // its own size), or read again from the image file (a workspace larger
+  // than the image share of --PatchMatchStereo.cache_size keeps only part of
+  // its images in memory). Empty = the images above are all there is.
   std::function<void(DenseMap* gray, DenseMap* color)> load_images;
   // Segmentation mask layers of the prior at the working resolution, read by
   // io/mask_layers.h for reference views; kEmbeddedSegmenter (layers empty) = the

@@ -29,20 +29,23 @@ Level BuildLevel(const std::vector<View>& views, const std::vector<int>& ids, in
   for (int v : ids) {
     const View& view = views[v];
     const bool with_color = v == color_view;
-    // Images beyond the cache's share live only for this call.
+    // What the view does not hold, load_images gives, for this call only.
+    const bool load_gray = view.gray.Empty() && view.load_images;
+    const bool load_color = with_color && view.color.Empty() && view.load_images;
     DenseMap gray, color;
-    const bool in_memory = !view.gray.Empty() || !view.load_images;
-    if (!in_memory) view.load_images(&gray, with_color ? &color : nullptr);
-    const DenseMap& full_gray = in_memory ? view.gray : gray;
-    const DenseMap& full_color = in_memory ? view.color : color;
+    if (load_gray || load_color) {
+      view.load_images(load_gray ? &gray : nullptr, load_color ? &color : nullptr);
+    }
+    const DenseMap& full_gray = load_gray ? gray : view.gray;
+    const DenseMap& full_color = load_color ? color : view.color;
     if (with_color && (full_color.channels != 3 || full_color.width != full_gray.width ||
                        full_color.height != full_gray.height)) {
       throw std::invalid_argument("view " + view.name +
                                   ": the segmentation prior and segment planes need its RGB image");
     }
-    level.gray.emplace(v, Halved(in_memory ? view.gray : std::move(gray), halvings));
+    level.gray.emplace(v, Halved(load_gray ? std::move(gray) : view.gray, halvings));
     if (with_color)
-      level.color.emplace(v, Halved(in_memory ? view.color : std::move(color), halvings));
+      level.color.emplace(v, Halved(load_color ? std::move(color) : view.color, halvings));
     level.cameras.emplace(v, LevelCamera(view, halvings));
   }
   return level;

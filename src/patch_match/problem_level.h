@@ -25,7 +25,7 @@ core::Camera LevelCamera(const View& view, int halvings);
 
 // The grey images and cameras of `ids` (indices into `views`) halved
 // `halvings` times, with the colour image of `color_view` too unless it is
-// -1. A view whose images are not in memory is read by its load_images.
+// -1. An image the view does not hold is given by its load_images.
 // Throws std::invalid_argument naming the view when the colour image is
 // missing or of another size than the grey one.
 Level BuildLevel(const std::vector<View>& views, const std::vector<int>& ids, int color_view,

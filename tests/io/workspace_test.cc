@@ -30,7 +30,10 @@ View ImagesOf(const View& view) {
   View images;
   images.gray = view.gray;
   images.color = view.color;
-  if (images.gray.Empty() && view.load_images) view.load_images(&images.gray, &images.color);
+  if (view.load_images) {
+    view.load_images(images.gray.Empty() ? &images.gray : nullptr,
+                     images.color.Empty() ? &images.color : nullptr);
+  }
   return images;
 }
 
@@ -167,22 +170,25 @@ TEST(Workspace, TextModelAndCustomConfigPath) {
 
 // Every used image is read at the start, to check it. Those within the
 // image share of cache_size (a quarter of it) stay in memory: at their own
-// size as their 8-bit pixels (3 bytes a pixel), converted when needed; the
-// others are read again from their files by load_images.
+// size as their grey plane and their 8-bit pixels (7 bytes a pixel), whose
+// colour load_images converts; the others are read again from their files
+// by load_images.
 TEST(Workspace, ImagesBeyondTheCacheShareAreReadAgainOnDemand) {
   TinyWorkspace tiny;
   StereoCommandOptions options = tiny.Options();
   const Workspace kept = LoadWorkspace(options);
-  const double image_bytes = kWidth * kHeight * 3;
+  const double image_bytes = kWidth * kHeight * 7;
   options.patch_match.cache_size = 4 * 1.5 * image_bytes / (1024.0 * 1024.0 * 1024.0);
   const Workspace partly = LoadWorkspace(options);
   for (int i = 0; i < 3; ++i) tiny.WriteImage(i, kWidth / 2, kHeight / 2);
   for (int i = 0; i < 3; ++i) {
     const View& view = partly.views[i];
     ASSERT_TRUE(view.load_images);
-    EXPECT_TRUE(view.gray.Empty());
+    EXPECT_EQ(view.gray.Empty(), i > 0);
+    EXPECT_TRUE(view.color.Empty());
     DenseMap gray, color;
-    if (i == 0) {  // the first fits: its files are not read again
+    if (i == 0) {  // the first fits: its file is not read again
+      EXPECT_EQ(view.gray.data, ImagesOf(kept.views[i]).gray.data);
       view.load_images(&gray, &color);
       EXPECT_EQ(gray.data, ImagesOf(kept.views[i]).gray.data);
       EXPECT_EQ(color.data, ImagesOf(kept.views[i]).color.data);
@@ -191,6 +197,7 @@ TEST(Workspace, ImagesBeyondTheCacheShareAreReadAgainOnDemand) {
     }
   }
   // A bad image stops the load, before anything runs.
+  for (int i = 0; i < 3; ++i) tiny.WriteImage(i, kWidth, kHeight);
   test::WriteRaw(tiny.Path("images/img1.png"), "not a png");
   EXPECT_NE(InputErrorMessage([&] { LoadWorkspace(options); }).find("img1.png"), std::string::npos);
 }
@@ -208,10 +215,12 @@ TEST(Workspace, DownsizedImagesAreKeptAsTheirPlanes) {
   view.load_images(&gray, &color);
   EXPECT_EQ(gray.data, view.gray.data);
   EXPECT_EQ(color.data, view.color.data);
-  // The colour is optional.
-  DenseMap gray_only;
+  // Either plane may be left out.
+  DenseMap gray_only, color_only;
   view.load_images(&gray_only, nullptr);
+  view.load_images(nullptr, &color_only);
   EXPECT_EQ(gray_only.data, view.gray.data);
+  EXPECT_EQ(color_only.data, view.color.data);
 }
 
 TEST(Workspace, MissingWorkspace) {

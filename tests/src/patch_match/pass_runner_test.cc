@@ -338,7 +338,7 @@ TEST(PatchMatchCpu, ImagesReadOnDemandGiveIdenticalMaps) {
     on_demand[v].color = DenseMap();
     on_demand[v].load_images = [&views, &num_loads, v](DenseMap* gray, DenseMap* color) {
       ++num_loads;
-      *gray = views[v].gray;
+      if (gray != nullptr) *gray = views[v].gray;
       if (color != nullptr) *color = views[v].color;
     };
   }

@@ -46,7 +46,7 @@ TEST(ProblemLevel, ImagesNotInMemoryAreReadOnceEachAndGiveTheSameLevel) {
     on_demand[v].color = DenseMap();
     on_demand[v].load_images = [&, v](DenseMap* gray, DenseMap* color) {
       ++loads[v];
-      *gray = views[v].gray;
+      if (gray != nullptr) *gray = views[v].gray;
       if (color != nullptr) *color = views[v].color;
     };
   }
@@ -58,6 +58,27 @@ TEST(ProblemLevel, ImagesNotInMemoryAreReadOnceEachAndGiveTheSameLevel) {
   EXPECT_EQ(a.color.at(1).data, b.color.at(1).data);
   // The views keep nothing of what was read.
   EXPECT_TRUE(on_demand[0].gray.Empty());
+}
+
+// A view that holds its grey image but not its colour (an image kept as
+// its 8-bit pixels) has only the colour loaded, and only as the reference.
+TEST(ProblemLevel, AViewHoldingItsGreyHasOnlyItsColourLoaded) {
+  const std::vector<View> views = ThreeViews();
+  std::vector<View> grey_only = views;
+  std::vector<int> loads(views.size(), 0);
+  for (size_t v = 0; v < views.size(); ++v) {
+    grey_only[v].color = DenseMap();
+    grey_only[v].load_images = [&, v](DenseMap* gray, DenseMap* color) {
+      ++loads[v];
+      EXPECT_EQ(gray, nullptr);
+      if (color != nullptr) *color = views[v].color;
+    };
+  }
+  const Level a = BuildLevel(views, {1, 0}, 1, 1);
+  const Level b = BuildLevel(grey_only, {1, 0}, 1, 1);
+  EXPECT_EQ(loads, (std::vector<int>{0, 1, 0}));
+  EXPECT_EQ(a.gray.at(0).data, b.gray.at(0).data);
+  EXPECT_EQ(a.color.at(1).data, b.color.at(1).data);
 }
 
 TEST(ProblemLevel, ColourOfAnotherSizeIsRefusedNamingTheView) {

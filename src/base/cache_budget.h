@@ -1,8 +1,8 @@
 // How --PatchMatchStereo.cache_size is shared among what is kept between the
 // image-passes of a run, so that together they stay within it whatever the
 // number of images (README, "Memory"). The shares follow the bytes per pixel
-// each holds: per-image state about 33, images 16 (3 when kept
-// as their 8-bit pixels), label layers 12 to 16.
+// each holds: per-image state about 33, images 16 (7 with the colour kept
+// as 8-bit pixels), label layers 12 to 16.
 #pragma once
 
 #include <cstddef>

@@ -16,6 +16,34 @@ namespace {
 
 constexpr double kInv255 = 1.0 / 255.0;
 
+// Each byte's value in [0, 1] as convertTo(CV_32F, kInv255) gives it: the
+// conversion is per value, so a table gives the same floats.
+const std::vector<float>& UnitOfByte() {
+  static const std::vector<float> table = [] {
+    cv::Mat bytes(1, 256, CV_8UC1);
+    for (int b = 0; b < 256; ++b) bytes.at<uint8_t>(0, b) = static_cast<uint8_t>(b);
+    cv::Mat values;
+    bytes.convertTo(values, CV_32F, kInv255);
+    return std::vector<float>(values.ptr<float>(), values.ptr<float>() + 256);
+  }();
+  return table;
+}
+
+// The RGB planes of an image at its own size, straight from its bytes: no
+// float BGR image between, which at 1536x1024 is 19 MB written and read
+// again each time a problem's reference needs its colour.
+DenseMap ColorPlanes(const DecodedImage& image) {
+  const std::vector<float>& unit = UnitOfByte();
+  DenseMap color(image.width, image.height, 3);
+  const size_t pixels = static_cast<size_t>(image.width) * image.height;
+  for (int c = 0; c < 3; ++c) {
+    float* out = color.Plane(c);
+    const uint8_t* in = image.bgr.data() + (2 - c);  // BGR -> RGB
+    for (size_t i = 0; i < pixels; ++i) out[i] = unit[in[3 * i]];
+  }
+  return color;
+}
+
 void CopyPlane(const cv::Mat& plane, float* out) {
   for (int row = 0; row < plane.rows; ++row) {
     const float* src = plane.ptr<float>(row);
@@ -85,25 +113,27 @@ DecodedImage DecodeViewImage(const std::string& path, int width, int height) {
 
 void ConvertViewImage(const DecodedImage& image, int new_width, int new_height, DenseMap* gray,
                       DenseMap* color) {
-  if (gray == nullptr && color == nullptr) return;
+  const bool resized = new_width != image.width || new_height != image.height;
+  if (color != nullptr && !resized) *color = ColorPlanes(image);
+  const bool color_from_float = color != nullptr && resized;
+  if (gray == nullptr && !color_from_float) return;
+
   const cv::Mat bgr(image.height, image.width, CV_8UC3, const_cast<uint8_t*>(image.bgr.data()));
   // Convert to float before resizing so neither step rounds to 8 bits.
   cv::Mat bgr_float;
   bgr.convertTo(bgr_float, CV_32FC3, kInv255);
-  if (new_width != bgr.cols || new_height != bgr.rows) {
-    cv::Mat resized;
-    cv::resize(bgr_float, resized, cv::Size(new_width, new_height), 0.0, 0.0, cv::INTER_AREA);
-    bgr_float = resized;
+  if (resized) {
+    cv::Mat smaller;
+    cv::resize(bgr_float, smaller, cv::Size(new_width, new_height), 0.0, 0.0, cv::INTER_AREA);
+    bgr_float = smaller;
   }
-
   if (gray != nullptr) {
     cv::Mat gray_float;
     cv::cvtColor(bgr_float, gray_float, cv::COLOR_BGR2GRAY);
     *gray = DenseMap(new_width, new_height, 1);
     CopyPlane(gray_float, gray->Plane(0));
   }
-  if (color == nullptr) return;
-
+  if (!color_from_float) return;
   std::vector<cv::Mat> bgr_planes;
   cv::split(bgr_float, bgr_planes);
   *color = DenseMap(new_width, new_height, 3);

@@ -135,5 +135,31 @@ TEST(ImageLoading, UnknownFormatIsRefusedBeforeDecoding) {
   EXPECT_NE(Load(dir.path() + "/missing.png").find("no such file"), std::string::npos);
 }
 
+// At its own size the colour comes straight from the bytes; it must be the
+// floats of converting the whole image and splitting it (as a resized one
+// is), at a width whose last pixels a vectorised conversion does one by one.
+TEST(ImageLoading, ColourAtItsOwnSizeIsThatOfTheFloatImage) {
+  DecodedImage image;
+  image.width = 37;
+  image.height = 5;
+  image.bgr.resize(37 * 5 * 3);
+  for (size_t i = 0; i < image.bgr.size(); ++i) image.bgr[i] = static_cast<uint8_t>(i * 97 % 256);
+  DenseMap color;
+  ConvertViewImage(image, 37, 5, nullptr, &color);
+  cv::Mat bgr_float;
+  cv::Mat(5, 37, CV_8UC3, image.bgr.data()).convertTo(bgr_float, CV_32FC3, 1.0 / 255.0);
+  for (int row = 0; row < 5; ++row) {
+    for (int col = 0; col < 37; ++col) {
+      const cv::Vec3f expected = bgr_float.at<cv::Vec3f>(row, col);
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(color.At(row, col, c), expected[2 - c]);
+    }
+  }
+  // With the grey plane asked for too, the colour is the same.
+  DenseMap gray, color_too;
+  ConvertViewImage(image, 37, 5, &gray, &color_too);
+  EXPECT_EQ(color_too.data, color.data);
+  EXPECT_EQ(gray.width, 37);
+}
+
 }  // namespace
 }  // namespace msp

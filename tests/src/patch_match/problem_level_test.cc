@@ -37,22 +37,38 @@ TEST(ProblemLevel, CamerasAndImagesAreThoseOfThePyramid) {
   EXPECT_FLOAT_EQ(LevelCamera(views[2], 2).fy, camera.fy);
 }
 
-TEST(ProblemLevel, ImagesNotInMemoryAreReadOnceEachAndGiveTheSameLevel) {
-  const std::vector<View> views = ThreeViews();
+// `views` without their colour images (and, unless keep_gray, their grey
+// ones), which load_images gives back; it counts its calls per view in
+// `loads` and the grey images it gave in `gray_loads`.
+std::vector<View> LoadedOnDemand(const std::vector<View>& views, bool keep_gray,
+                                 std::vector<int>* loads, int* gray_loads) {
   std::vector<View> on_demand = views;
-  std::vector<int> loads(views.size(), 0);
+  loads->assign(views.size(), 0);
+  *gray_loads = 0;
   for (size_t v = 0; v < views.size(); ++v) {
-    on_demand[v].gray = DenseMap();
+    if (!keep_gray) on_demand[v].gray = DenseMap();
     on_demand[v].color = DenseMap();
-    on_demand[v].load_images = [&, v](DenseMap* gray, DenseMap* color) {
-      ++loads[v];
-      if (gray != nullptr) *gray = views[v].gray;
+    on_demand[v].load_images = [&views, loads, gray_loads, v](DenseMap* gray, DenseMap* color) {
+      ++(*loads)[v];
+      if (gray != nullptr) {
+        ++*gray_loads;
+        *gray = views[v].gray;
+      }
       if (color != nullptr) *color = views[v].color;
     };
   }
+  return on_demand;
+}
+
+TEST(ProblemLevel, ImagesNotInMemoryAreReadOnceEachAndGiveTheSameLevel) {
+  const std::vector<View> views = ThreeViews();
+  std::vector<int> loads;
+  int gray_loads = 0;
+  const std::vector<View> on_demand = LoadedOnDemand(views, false, &loads, &gray_loads);
   const Level a = BuildLevel(views, {1, 0}, 1, 1);
   const Level b = BuildLevel(on_demand, {1, 0}, 1, 1);
   EXPECT_EQ(loads, (std::vector<int>{1, 1, 0}));
+  EXPECT_EQ(gray_loads, 2);
   EXPECT_EQ(a.gray.at(0).data, b.gray.at(0).data);
   EXPECT_EQ(a.gray.at(1).data, b.gray.at(1).data);
   EXPECT_EQ(a.color.at(1).data, b.color.at(1).data);
@@ -64,19 +80,13 @@ TEST(ProblemLevel, ImagesNotInMemoryAreReadOnceEachAndGiveTheSameLevel) {
 // its 8-bit pixels) has only the colour loaded, and only as the reference.
 TEST(ProblemLevel, AViewHoldingItsGreyHasOnlyItsColourLoaded) {
   const std::vector<View> views = ThreeViews();
-  std::vector<View> grey_only = views;
-  std::vector<int> loads(views.size(), 0);
-  for (size_t v = 0; v < views.size(); ++v) {
-    grey_only[v].color = DenseMap();
-    grey_only[v].load_images = [&, v](DenseMap* gray, DenseMap* color) {
-      ++loads[v];
-      EXPECT_EQ(gray, nullptr);
-      if (color != nullptr) *color = views[v].color;
-    };
-  }
+  std::vector<int> loads;
+  int gray_loads = 0;
+  const std::vector<View> grey_kept = LoadedOnDemand(views, true, &loads, &gray_loads);
   const Level a = BuildLevel(views, {1, 0}, 1, 1);
-  const Level b = BuildLevel(grey_only, {1, 0}, 1, 1);
+  const Level b = BuildLevel(grey_kept, {1, 0}, 1, 1);
   EXPECT_EQ(loads, (std::vector<int>{0, 1, 0}));
+  EXPECT_EQ(gray_loads, 0);
   EXPECT_EQ(a.gray.at(0).data, b.gray.at(0).data);
   EXPECT_EQ(a.color.at(1).data, b.color.at(1).data);
 }

@@ -65,6 +65,13 @@ void WarnAboutIgnoredOptions(const StereoCommandOptions& options) {
     LogWarning(MSP_OPTION_FLAG(p, sigma_spatial) + " / " + MSP_OPTION_FLAG(p, sigma_color) +
                " only apply with " + MSP_OPTION_FLAG(m, bilateral_ncc) + " true");
   }
+  if (p.geom_consistency_regularizer != defaults.geom_consistency_regularizer &&
+      m.geom_consistency_depth_error > 0.0) {
+    LogWarning(MSP_OPTION_FLAG(p, geom_consistency_regularizer) +
+               " only applies with " + MSP_OPTION_FLAG(m, geom_consistency_depth_error) +
+               " 0 (the term in pixels); the term in depth takes " +
+               MSP_OPTION_FLAG(m, geom_consistency_depth_weight));
+  }
   if (p.num_iterations != defaults.num_iterations) {
     LogWarning(MSP_OPTION_FLAG(p, num_iterations) + " is ignored (the APD schedule runs " +
                MSP_OPTION_FLAG(m, advanced_iterations) +

@@ -134,6 +134,7 @@ void CheckMspStereoOptions(const MspStereoOptions& o) {
   MSP_CHECK_RANGE(o, filter_max_depth_error, 0.0, 1.0);
   MSP_CHECK_RANGE(o, filter_single_view_depth_error, 0.0, 1.0);
   MSP_CHECK_RANGE(o, geom_consistency_depth_error, 0.0, 1.0);
+  MSP_CHECK_NON_NEGATIVE(o, geom_consistency_depth_weight);
   MSP_CHECK_RANGE(o, advanced_finest_refine_radius, 1, 5);  // 5 = core::kLocalRefineRadius
   MSP_CHECK_RANGE(o, advanced_geometric_passes, 1,
                   3);  // 3 = kNumGeometricPasses, the most a round has

@@ -150,8 +150,9 @@ void DefinePatchMatchStereoOptions(PatchMatchStereoOptions* p, OptionVisitor* t)
                      "*.geometric.bin besides the unfiltered *.photometric.bin, as COLMAP. false = "
                      "the photometric pass alone, filtered into *.photometric.bin.");
   MSP_ADD_OPTION(t, *p, geom_consistency_regularizer,
-                 "Weight of the geometric consistency term (the reprojection error) relative to "
-                 "the photometric cost.");
+                 "Weight of the geometric consistency term in pixels (the reprojection error, "
+                 "with --MspStereo.geom_consistency_depth_error 0) relative to the photometric "
+                 "cost; the term in depth takes --MspStereo.geom_consistency_depth_weight.");
   MSP_ADD_OPTION(
       t, *p, geom_consistency_max_cost,
       "Maximum geometric consistency cost in pixels (forward-backward reprojection error).");
@@ -298,6 +299,11 @@ void DefineMspStereoCommonOptions(MspStereoOptions* m, OptionVisitor* t) {
                  "Geometric passes measure a source's disagreement with a pixel's point in depth "
                  "instead of reprojected pixels: this share of the depth costs what one pixel "
                  "does (docs/method.md section 2.7). 0 = COLMAP's reprojection error in pixels.");
+  MSP_ADD_OPTION(t, *m, geom_consistency_depth_weight,
+                 "Weight of the geometric term in depth (geom_consistency_depth_error > 0) "
+                 "relative to the photometric cost; replaces "
+                 "--PatchMatchStereo.geom_consistency_regularizer, which weighs the term in "
+                 "pixels (geom_consistency_depth_error 0).");
   MSP_ADD_OPTION(t, *m, equidistribution,
                  "Adaptive equidistribution (eq. 7): where a depth edge or the border closes one "
                  "of an unreliable pixel's 8 anchor sectors, re-cut the sectors so that each "

@@ -153,6 +153,10 @@ struct MspStereoOptions {
   // Geometric passes measure a source's disagreement in depth: this share of the depth costs what
   // one pixel of reprojection error does; 0 = COLMAP's reprojection error in pixels.
   double geom_consistency_depth_error = 0.01;
+  // The weight of the geometric term in depth (geom_consistency_depth_error > 0), in place of
+  // --PatchMatchStereo.geom_consistency_regularizer, COLMAP's weight of its reprojection error
+  // (which stays its default, 0.3, and weighs the term in pixels).
+  double geom_consistency_depth_weight = 0.2;
   // Adaptive equidistribution (eq. 7, docs/method.md section 5): re-cut each unreliable pixel's
   // 8 anchor sectors so that each faces about as many reliable pixels; false = fixed 45-degree
   // sectors ("w/o Eqd.").

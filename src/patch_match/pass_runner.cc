@@ -273,7 +273,10 @@ class PassRunner {
     p.depth_min = problem.depth_min;
     p.depth_max = problem.depth_max;
     p.geometric = geometric ? 1 : 0;
-    p.geom_lambda = static_cast<float>(pm_.geom_consistency_regularizer);
+    // The term in depth has its own weight: COLMAP's weighs reprojected pixels.
+    const bool in_depth = msp_.geom_consistency_depth_error > 0.0;
+    p.geom_lambda = static_cast<float>(in_depth ? msp_.geom_consistency_depth_weight
+                                                : pm_.geom_consistency_regularizer);
     p.geom_max_error = static_cast<float>(pm_.geom_consistency_max_cost);
     p.geom_depth_unit = static_cast<float>(msp_.geom_consistency_depth_error);
     p.num_samples = pm_.num_samples;

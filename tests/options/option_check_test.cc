@@ -114,6 +114,8 @@ TEST(OptionCheck, EveryOutOfRangeValueNamesOptionValueAndRange) {
        [](auto* o) { o->msp.advanced_reliable_min_spread = 3; }},
       {"MspStereo.advanced_restoring_image_size", "-1", ">= 0",
        [](auto* o) { o->msp.advanced_restoring_image_size = -1; }},
+      {"MspStereo.geom_consistency_depth_weight", "-0.2", ">= 0",
+       [](auto* o) { o->msp.geom_consistency_depth_weight = -0.2; }},
       {"MspStereo.advanced_anchor_max_distance", "1", "[2, 65536]",
        [](auto* o) { o->msp.advanced_anchor_max_distance = 1; }},
       {"MspStereo.advanced_equidistribution_iterations", "0", "[1, 3]",

@@ -325,6 +325,32 @@ TEST(PatchMatchCpu, SpillingStateGivesIdenticalMaps) {
   ExpectSameMaps(in_memory, spilled);
 }
 
+// The geometric term in depth takes --MspStereo.geom_consistency_depth_weight;
+// COLMAP's geom_consistency_regularizer weighs only the term in pixels.
+TEST(PatchMatchCpu, GeometricTermInDepthTakesItsOwnWeight) {
+  const std::vector<View> views = test::RenderFrontoParallelPlane(48, 36, 3, kPlaneDepth, 0.25f);
+  const std::vector<Problem> problems = AllProblems(3);
+  const test::TempDir scratch;
+  auto run = [&](double regularizer, double depth_weight, double depth_error) {
+    PatchMatchStereoOptions pm;
+    pm.geom_consistency_regularizer = regularizer;
+    MspStereoOptions msp;
+    msp.geom_consistency_depth_weight = depth_weight;
+    msp.geom_consistency_depth_error = depth_error;
+    MemorySink sink;
+    RunPatchMatchCpu(views, problems, pm, msp, scratch.path(), sink);
+    return sink;
+  };
+  // The geometric maps of the last pass, whose sweeps the term weighs.
+  auto depths = [](const MemorySink& sink) { return sink.maps.at({0, "geometric"}).first.data; };
+  const MemorySink in_depth = run(0.3, 0.2, 0.01);
+  ExpectSameMaps(in_depth, run(2.0, 0.2, 0.01));
+  EXPECT_NE(depths(in_depth), depths(run(0.3, 2.0, 0.01)));
+  const MemorySink in_pixels = run(0.3, 0.2, 0.0);
+  ExpectSameMaps(in_pixels, run(0.3, 2.0, 0.0));
+  EXPECT_NE(depths(in_pixels), depths(run(2.0, 0.2, 0.0)));
+}
+
 // Views whose images are not in memory are read by their load_images each
 // time a problem needs them (a workspace beyond the cache's image share);
 // the maps must not change, with or without spilled state.

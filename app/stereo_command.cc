@@ -67,8 +67,8 @@ void WarnAboutIgnoredOptions(const StereoCommandOptions& options) {
   }
   if (p.geom_consistency_regularizer != defaults.geom_consistency_regularizer &&
       m.geom_consistency_depth_error > 0.0) {
-    LogWarning(MSP_OPTION_FLAG(p, geom_consistency_regularizer) +
-               " only applies with " + MSP_OPTION_FLAG(m, geom_consistency_depth_error) +
+    LogWarning(MSP_OPTION_FLAG(p, geom_consistency_regularizer) + " only applies with " +
+               MSP_OPTION_FLAG(m, geom_consistency_depth_error) +
                " 0 (the term in pixels); the term in depth takes " +
                MSP_OPTION_FLAG(m, geom_consistency_depth_weight));
   }

@@ -20,7 +20,7 @@ NO_SYN="--MspStereo.synergistic_optimization false"
 # the row above (segment planes, our own step, stay on throughout); the next
 # three take one piece out of the full method's 3D optimization; `default`
 # is what msp_stereo runs without options (the conventional core), and the
-# last six take one of its answers to weak texture out (docs/method.md
+# last seven take one of its answers to weak texture out (docs/method.md
 # sections 2.7, 2.9, 2.12 and 2.13).
 rows=(
   "baseline|APD-MVS baseline|$METHOD $NO_PRIOR $NO_EQD $NO_CLU $NO_SYN"
@@ -40,6 +40,7 @@ rows=(
   "reprojection_filter|default with COLMAP's 1 px reprojection filter|--MspStereo.filter_max_depth_error 0"
   "two_view_filter|default with two sources always needed by the filter|--MspStereo.filter_single_view_depth_error 0"
   "pixel_geometry|default with the geometric passes' error in pixels|--MspStereo.geom_consistency_depth_error 0"
+  "colmap_weight|default with the geometric term in depth weighted as COLMAP's in pixels (0.3)|--MspStereo.geom_consistency_depth_weight 0.3"
   "no_consensus_planes|default w/o the consensus planes|--MspStereo.consensus_planes false"
 )
 

@@ -173,8 +173,6 @@ TEST(PassSchedule, PassesAndIterationsPerRound) {
   EXPECT_EQ(schedule[6].output, PassOutput::kUnfiltered);
 }
 
-// Rounds above deformable_max_image_size run the conventional sweeps, and
-// the prior (which confines anchors) runs only after deformable passes.
 // With advanced_restoring_image_size (600), every round after the first at
 // least that large restores detail as the finest round does; the first round
 // never does, and 0 leaves the finest round alone.
@@ -203,6 +201,8 @@ TEST(PassSchedule, RoundsFromAnImageSizeRestoreDetail) {
             ToString(BuildPassSchedule(PatchMatchStereoOptions(), MspStereoOptions(), 640, 480)));
 }
 
+// Rounds above deformable_max_image_size run the conventional sweeps, and
+// the prior (which confines anchors) runs only after deformable passes.
 TEST(PassSchedule, DeformableOnlyUpToAnImageSize) {
   MspStereoOptions msp = WithDeformable();
   msp.advanced_deformable_max_image_size = 160;

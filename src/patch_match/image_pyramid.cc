@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "base/parallel_for.h"
 #include "core/math/plane.h"
 #include "core/patch_match/joint_bilateral.h"
 
@@ -74,7 +75,7 @@ PixelState UpsampleStateNearest(const PixelState& coarse, const core::Camera& co
 
 PixelState UpsampleStateJointBilateral(const PixelState& coarse, const DenseMap& coarse_guide,
                                        const core::Camera& coarse_cam, const DenseMap& fine_guide,
-                                       const core::Camera& fine_cam) {
+                                       const core::Camera& fine_cam, int num_threads) {
   if (coarse_guide.width != coarse.width || coarse_guide.height != coarse.height ||
       fine_guide.width != fine_cam.width || fine_guide.height != fine_cam.height) {
     throw std::logic_error("UpsampleStateJointBilateral: guide and state sizes differ");
@@ -95,7 +96,7 @@ PixelState UpsampleStateJointBilateral(const PixelState& coarse, const DenseMap&
   // fine pixel's coarse position (uc, vc) follows from the intrinsics.
   const float ax = fine_cam.fx / coarse_cam.fx;
   const float ay = fine_cam.fy / coarse_cam.fy;
-  for (int r = 0; r < fine.height; ++r) {
+  ParallelFor(0, fine.height, num_threads, [&](int r) {
     const float vc = coarse_cam.cy + (r - fine_cam.cy) / ay;
     const int cr = NearestIndex(vc, coarse.height);
     for (int c = 0; c < fine.width; ++c) {
@@ -125,7 +126,7 @@ PixelState UpsampleStateJointBilateral(const PixelState& coarse, const DenseMap&
       fv.Set(fi, core::PlaneHypothesis{depth[best], coarse.Plane(index[best]).normal});
       fine.mask[fi] = coarse.mask[index[best]];
     }
-  }
+  });
   return fine;
 }
 

@@ -34,9 +34,10 @@ PixelState UpsampleStateNearest(const PixelState& coarse, const core::Camera& co
 // the two levels), so depth edges move to the image edges inside a coarse
 // pixel. Prior edge bits stay nearest neighbour's: they mark image locations,
 // and their 2-px lines stay whole where the two fine pixels of a coarse edge
-// pixel take planes from different neighbours.
+// pixel take planes from different neighbours. The fine rows share out over
+// up to `num_threads` threads.
 PixelState UpsampleStateJointBilateral(const PixelState& coarse, const DenseMap& coarse_guide,
                                        const core::Camera& coarse_cam, const DenseMap& fine_guide,
-                                       const core::Camera& fine_cam);
+                                       const core::Camera& fine_cam, int num_threads = 1);
 
 }  // namespace msp

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "base/parallel_for.h"
 #include "base/pixel_neighbours.h"
 #include "core/patch_match/local_refine.h"
 #include "core/patch_match/map_stage.h"
@@ -340,13 +341,24 @@ double ShareAtInfinity(const core::PassParams& p, const std::vector<int>& pixels
 // evidence for the textured side only.
 void CountEvidence(const core::PassParams& params, const std::vector<int32_t>& labels,
                    const std::vector<SegmentPlane>& planes, const std::vector<uint8_t>& candidate,
-                   const std::vector<uint8_t>& textured, std::vector<SegmentStats>* stats) {
+                   const std::vector<uint8_t>& textured, int num_threads,
+                   std::vector<SegmentStats>* stats) {
   const core::PixelStateView& s = params.state;
-  for (int row = 0; row < s.height; ++row) {
+  // Each pixel's kind first, on the threads; the segments then gather their
+  // evidence in scan order (ShareAtInfinity samples it in that order).
+  enum : uint8_t { kNone, kBesideTexture, kClear };
+  std::vector<uint8_t> kind(labels.size(), kNone);
+  ParallelFor(0, s.height, num_threads, [&](int row) {
     for (int col = 0; col < s.width; ++col) {
       if (!IsEvidence(params, textured, col, row)) continue;
       if (HasCrossTexture(params, col, row)) continue;  // a textured surface's contour
-      const bool beside_texture = TexturedBeside(params, col, row);
+      kind[s.Index(col, row)] = TexturedBeside(params, col, row) ? kBesideTexture : kClear;
+    }
+  });
+  for (int row = 0; row < s.height; ++row) {
+    for (int col = 0; col < s.width; ++col) {
+      if (kind[s.Index(col, row)] == kNone) continue;
+      const bool beside_texture = kind[s.Index(col, row)] == kBesideTexture;
       int ids[5];
       int num_ids = 0;
       const auto add = [&](int c, int r) {
@@ -446,11 +458,12 @@ std::vector<uint8_t> OpenRegions(const core::PassParams& params, const std::vect
 std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMap& color,
                                    const std::vector<int32_t>& labels,
                                    const std::vector<SegmentPlane>& planes,
-                                   const std::vector<float>& window_texture) {
+                                   const std::vector<float>& window_texture, int num_threads) {
   const core::PixelStateView& s = params.state;
   // Texture that can fix a depth: the window's (`window_texture`) and not
   // only a ramp (a soft cloud, the sky's gradient; ramp_free_texture.h).
-  const std::vector<float> ramp_free = RampFreeTexture(params.ref_image, params.ncc.window_radius);
+  const std::vector<float> ramp_free =
+      RampFreeTexture(params.ref_image, params.ncc.window_radius, num_threads);
   std::vector<uint8_t> textured(window_texture.size());
   for (size_t i = 0; i < textured.size(); ++i) {
     textured[i] =
@@ -474,16 +487,15 @@ std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMa
   for (size_t i = 0; i < labels.size(); ++i) {
     if (labels[i] > 0 && textured[i]) textured_pixels[labels[i]].push_back(static_cast<int>(i));
   }
+  const int num_ids = static_cast<int>(planes.size());
   std::vector<uint8_t> candidate(planes.size(), 0);
-  bool any = false;
-  for (size_t id = 1; id < planes.size(); ++id) {
+  ParallelFor(1, num_ids, num_threads, [&](int id) {
     const SegmentStats& segment = stats[id];
     candidate[id] =
         segment.pixels > 0 && (segment.textured <= kMaxTexturedShare * segment.pixels ||
                                ShareAtInfinity(params, textured_pixels[id]) > kMaxTexturedShare);
-    any = any || candidate[id];
-  }
-  if (!any) return {};
+  });
+  if (std::count(candidate.begin(), candidate.end(), 1) == 0) return {};
   // Only a sky-coloured segment with an accepted plane needs its outline
   // (HasEvidence): the others are decided without it.
   std::vector<uint8_t> coloured(planes.size(), 0);
@@ -491,15 +503,13 @@ std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMa
     coloured[id] = candidate[id] && SkyColoured(stats[id]);
   }
   CountOutlines(params, labels, planes, coloured, &stats);
-  CountEvidence(params, labels, planes, candidate, textured, &stats);
+  CountEvidence(params, labels, planes, candidate, textured, num_threads, &stats);
   std::vector<uint8_t> no_evidence(planes.size(), 0);
-  for (size_t id = 1; id < planes.size(); ++id) {
+  ParallelFor(1, num_ids, num_threads, [&](int id) {
     no_evidence[id] = candidate[id] && !HasEvidence(params, planes[id], stats[id]);
-  }
+  });
   std::vector<uint8_t> sky_segment = OpenRegions(params, labels, stats, no_evidence);
-  any = false;
-  for (size_t id = 1; id < planes.size(); ++id) any = any || sky_segment[id];
-  if (!any) return {};
+  if (std::count(sky_segment.begin(), sky_segment.end(), 1) == 0) return {};
   // Per pixel, the open-sky segment it belongs to (0: none).
   std::vector<int32_t> sky_of(labels.size(), 0);
   for (size_t i = 0; i < labels.size(); ++i) {

@@ -31,11 +31,11 @@ namespace msp {
 // hold, or it has no accepted plane and a daylight sky's colour (mean grey
 // of `params.ref_image`, mean colour of `color`, the reference image's RGB
 // planes at the pass's level). Then the mixed pixels of its outline. Empty
-// when no pixel is.
+// when no pixel is. Runs on up to `num_threads` threads, with the same result.
 std::vector<uint8_t> OpenSkyPixels(const core::PassParams& params, const DenseMap& color,
                                    const std::vector<int32_t>& labels,
                                    const std::vector<SegmentPlane>& planes,
-                                   const std::vector<float>& window_texture);
+                                   const std::vector<float>& window_texture, int num_threads = 1);
 
 // Depth 0 and normal 0 in `depth` and `normal` (a map's size) where
 // `open_sky` is 1; nothing when it is empty.

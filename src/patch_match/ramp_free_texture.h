@@ -11,6 +11,7 @@
 #include <cmath>
 #include <vector>
 
+#include "base/parallel_for.h"
 #include "core/patch_match/patch_match_kernel.h"
 
 namespace msp {
@@ -18,8 +19,9 @@ namespace msp {
 // Per pixel of `image`, the residual standard deviation of the intensities in
 // the (2 radius + 1)^2 box around it (clipped at the image's borders) about
 // their least-squares ramp. Summed-area tables of I, I^2, I x and I y: the
-// same cost at any radius.
-inline std::vector<float> RampFreeTexture(const core::ImageView& image, int radius) {
+// same cost at any radius. The rows share out over up to `num_threads` threads.
+inline std::vector<float> RampFreeTexture(const core::ImageView& image, int radius,
+                                          int num_threads = 1) {
   const int w = image.width, h = image.height;
   const size_t stride = static_cast<size_t>(w) + 1;
   std::vector<double> s(stride * (h + 1), 0.0), s2(s), sx(s), sy(s);
@@ -35,7 +37,7 @@ inline std::vector<float> RampFreeTexture(const core::ImageView& image, int radi
     }
   }
   std::vector<float> out(static_cast<size_t>(w) * h, 0.0f);
-  for (int row = 0; row < h; ++row) {
+  ParallelFor(0, h, num_threads, [&](int row) {
     const int r0 = std::max(0, row - radius), r1 = std::min(h, row + radius + 1);
     for (int col = 0; col < w; ++col) {
       const int c0 = std::max(0, col - radius), c1 = std::min(w, col + radius + 1);
@@ -56,7 +58,7 @@ inline std::vector<float> RampFreeTexture(const core::ImageView& image, int radi
       out[static_cast<size_t>(row) * w + col] =
           var > 0.0 ? static_cast<float>(std::sqrt(var)) : 0.0f;
     }
-  }
+  });
   return out;
 }
 

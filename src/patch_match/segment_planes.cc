@@ -197,7 +197,7 @@ bool Borrowed(const core::PassParams& p, float focal_baseline, const std::vector
 std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
                                            const std::vector<int32_t>& labels,
                                            const std::vector<uint8_t>& reliable, uint64_t key,
-                                           bool own_support) {
+                                           bool own_support, int num_threads) {
   const core::PixelStateView& s = params.state;
   int num_segments = 0;
   for (int32_t l : labels) num_segments = std::max(num_segments, static_cast<int>(l));
@@ -227,20 +227,22 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
     }
   }
   const float focal_baseline = params.ref_camera.fx * core::MeanBaseline(params, 0u);
+  // Each segment's fit draws from a generator of its own, so the segments
+  // share out over the threads with the same planes as one after another.
   std::vector<SegmentPlane> fitted(num_segments + 1);
   std::vector<double> spread(num_segments + 1, 0.0);
-  for (int id = 1; id <= num_segments; ++id) {
+  ParallelFor(1, num_segments + 1, num_threads, [&](int id) {
     spread[id] = SecondSpread(pixels[id]);
     fitted[id] = FitOnePlane(params, focal_baseline, support[id], spread[id],
                              core::Mix64(key ^ static_cast<uint64_t>(id)));
-  }
+  });
   if (!own_support) return fitted;
   // The support rule, against the planes as fitted (the order of the
   // segments does not matter).
   std::vector<SegmentPlane> planes = fitted;
-  for (int id = 1; id <= num_segments; ++id) {
+  ParallelFor(1, num_segments + 1, num_threads, [&](int id) {
     SegmentPlane& plane = planes[id];
-    if (!plane.accepted) continue;
+    if (!plane.accepted) return;
     std::vector<PixelPosition> own;
     for (const SupportPoint* s : Inliers(params, focal_baseline, support[id], plane)) {
       if (!Borrowed(params, focal_baseline, labels, fitted, id, *s))
@@ -248,7 +250,7 @@ std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
     }
     plane.num_own = static_cast<int>(own.size());
     plane.accepted = plane.num_own >= kMinInliers && Spans(own, spread[id]);
-  }
+  });
   return planes;
 }
 
@@ -397,12 +399,12 @@ SegmentPlanesReport ApplySegmentPlanes(const core::PassParams& params,
   });
   const uint64_t key = core::RngKey(params.seed, params.image_id, params.pass_id, 0x5E6u, 0u);
   std::vector<SegmentPlane> planes =
-      FitSegmentPlanes(params, labels, reliable, key, rules.own_support);
+      FitSegmentPlanes(params, labels, reliable, key, rules.own_support, num_threads);
   if (rules.confirm) ConfirmSegmentPlanes(params, labels, num_threads, &planes);
   SegmentPlanesReport report;
   std::vector<uint8_t> sky;
   if (rules.open_sky && color != nullptr)
-    sky = OpenSkyPixels(params, *color, labels, planes, texture);
+    sky = OpenSkyPixels(params, *color, labels, planes, texture, num_threads);
   report.num_open_sky = static_cast<int>(std::count(sky.begin(), sky.end(), 1));
   if (open_sky != nullptr) *open_sky = std::move(sky);
   report.num_segments = static_cast<int>(planes.size()) - 1;

@@ -22,8 +22,8 @@ namespace msp {
 constexpr float kSamePlaneCos = 0.985f;
 
 struct SegmentPlane {
-  core::Vec3 normal;    // unit, camera frame
-  core::Vec3 point;     // a point of the plane, camera frame
+  core::Vec3 normal{};  // unit, camera frame (zero for a segment without a fit)
+  core::Vec3 point{};   // a point of the plane, camera frame
   int num_support = 0;  // reliable pixels on or next to the segment
   int num_inliers = 0;
   // Inliers that are the segment's own evidence: not on its border with a
@@ -57,11 +57,12 @@ struct SegmentPlaneRules {
 // inliers. A crease lies on two different planes and counts for both; a
 // segment whose support lies only where a coplanar neighbour ends is that
 // neighbour extended across a colour edge, with no evidence of its own.
-// Index = segment id. Without `own_support`, every inlier counts.
+// Index = segment id. Without `own_support`, every inlier counts. The
+// segments are fitted on up to `num_threads` threads, with the same result.
 std::vector<SegmentPlane> FitSegmentPlanes(const core::PassParams& params,
                                            const std::vector<int32_t>& labels,
                                            const std::vector<uint8_t>& reliable, uint64_t key,
-                                           bool own_support = true);
+                                           bool own_support = true, int num_threads = 1);
 
 // The segments of `segments` cut at the edges of `regions` (a label image of
 // the same size: the finest mask layer): pixels share a label when they share

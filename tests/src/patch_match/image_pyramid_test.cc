@@ -211,6 +211,20 @@ TEST(ImagePyramid, UpsampleJointBilateralKeepsOnePlaneExactly) {
 
 // A coarse pixel without a plane takes one from its neighbours; a fine pixel
 // whose 3x3 has none keeps nearest neighbour's empty plane and mask.
+// The fine rows share out over threads with the planes one thread gives.
+TEST(ImagePyramid, UpsampleJointBilateralOnThreadsIsTheSame) {
+  const core::Camera fine = test::CentredCamera(64, 48);
+  const core::Camera coarse = HalveCamera(fine, 32, 24);
+  const DenseMap guide = StepGuide();
+  const PixelState state = StepState(true);
+  const PixelState one = UpsampleGuided(state, guide, coarse, fine);
+  const PixelState three =
+      UpsampleStateJointBilateral(state, DownsampleHalf(guide), coarse, guide, fine, 3);
+  EXPECT_EQ(one.depth, three.depth);
+  EXPECT_EQ(one.normal, three.normal);
+  EXPECT_EQ(one.mask, three.mask);
+}
+
 TEST(ImagePyramid, UpsampleJointBilateralFillsFromNeighbours) {
   const core::Camera fine = test::CentredCamera(64, 48);
   const core::Camera coarse = HalveCamera(fine, 32, 24);

@@ -112,7 +112,7 @@ struct StripsOf {
       normal[2 * labels.size() + i] = -0.866f;
     }
   }
-  std::vector<uint8_t> Run() {
+  std::vector<uint8_t> Run(int num_threads = 1) {
     params.state = core::PixelStateView{depth.data(), normal.data(), cost.data(),
                                         mask.data(),  kWidth,        kHeight};
     params.ref_camera = test::CentredCamera(kWidth, kHeight);
@@ -129,7 +129,7 @@ struct StripsOf {
     }
     params.depth_min = 1.0f;
     params.depth_max = 10.0f;
-    return OpenSkyPixels(params, color, labels, planes, texture);
+    return OpenSkyPixels(params, color, labels, planes, texture, num_threads);
   }
   bool Marked(const std::vector<uint8_t>& sky, int id) const {
     for (size_t i = 0; i < labels.size(); ++i) {
@@ -323,6 +323,18 @@ TEST(OpenSky, SkyReachesAcrossItsSegments) {
   EXPECT_TRUE(s.Marked(sky, 4));
   EXPECT_TRUE(s.Marked(sky, 5));
   EXPECT_TRUE(s.Untouched(sky, 3));
+}
+
+// On several threads the same pixels: the segments gather their evidence in
+// scan order whoever tested the pixels.
+TEST(OpenSky, ThreadsMarkTheSamePixels) {
+  Strips s;
+  s.Set(3, &s.grey, 0.7f);
+  s.Edge(2 * Strips::kStrip);
+  s.Texture(4);
+  const std::vector<uint8_t> one = s.Run();
+  EXPECT_TRUE(s.Marked(one, 1));
+  EXPECT_EQ(s.Run(3), one);
 }
 
 // An accepted plane that the pixels all around the segment hold is no

@@ -240,6 +240,33 @@ TEST(SegmentPlanes, SupportOnACreaseIsOwnForBothPlanes) {
   EXPECT_EQ(planes[2].num_own, planes[2].num_inliers);
 }
 
+// The segments are fitted on several threads with the planes one thread
+// gives: each segment's RANSAC draws from a generator of its own.
+TEST(SegmentPlanes, ThreadsFitTheSamePlanes) {
+  Fixture f = MakeFixture(LShape, 4);
+  const core::PixelStateView& s = f.scene.params.state;
+  for (int row = 0; row < s.height; ++row) {
+    for (int col = 0; col < s.width; ++col) {
+      f.labels[s.Index(col, row)] = 1 + col / 16 + 20 * (row / 50);  // a grid of segments
+      f.reliable[s.Index(col, row)] = f.reliable[s.Index(col, row)] || (col + row) % 3 == 0;
+    }
+  }
+  const std::vector<SegmentPlane> one = FitSegmentPlanes(f.scene.params, f.labels, f.reliable, 7u);
+  const std::vector<SegmentPlane> three =
+      FitSegmentPlanes(f.scene.params, f.labels, f.reliable, 7u, true, 3);
+  ASSERT_EQ(one.size(), three.size());
+  int accepted = 0;
+  for (size_t id = 1; id < one.size(); ++id) {
+    accepted += one[id].accepted;
+    EXPECT_EQ(one[id].accepted, three[id].accepted);
+    EXPECT_EQ(one[id].num_inliers, three[id].num_inliers);
+    EXPECT_EQ(one[id].num_own, three[id].num_own);
+    EXPECT_EQ(one[id].normal.x, three[id].normal.x);
+    EXPECT_EQ(one[id].point.z, three[id].point.z);
+  }
+  EXPECT_GT(accepted, 10);  // the comparison covers fitted planes
+}
+
 TEST(SegmentPlanes, RejectsSupportAlongOneLine) {
   // Every plane through the band nearly fits it: no plane for the segment.
   const Fixture f = MakeFixture(TwoRows, 0);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <future>
 #include <map>
 #include <memory>
 #include <set>
@@ -359,16 +358,6 @@ class PassRunner {
     const std::vector<uint8_t> unlit = UnlitPixels(level_->gray.at(problem.ref), pm_.window_radius,
                                                    static_cast<float>(msp_.black_level));
     core::PassParams params = MakeParams(problem, pass, prev_depth, state);
-    // OpenCV's graph segmentation runs on one thread: made beside the start
-    // and the sweeps, which do not read it, it leaves no core idle (with one
-    // thread asked for, it waits for its step).
-    std::future<std::vector<int32_t>> segments;
-    if (state.segments.empty() && NeedsSegments(pass)) {
-      const auto policy = threads_ > 1 ? std::launch::async : std::launch::deferred;
-      segments = std::async(policy, [this, &problem] {
-        return SegmentPlaneLabels(level_->color.at(problem.ref), segmenter_);
-      });
-    }
     if (!unlit.empty()) {
       params.unlit = unlit.data();
       if (pass.index == 0) {
@@ -423,12 +412,11 @@ class PassRunner {
         engine_.LocalRefine(params);
       }
     });
-    if (segments.valid()) state.segments = segments.get();
     if (pass.segment_planes) {
       Measured(pass, Step::kSegmentPlanes,
                [&] { RunSegmentPlanes(params, problem, regions, &state); });
     }
-    if (PlanarPriorRuns(pass)) {
+    if ((msp_.planar_prior || msp_.consensus_planes) && params.geometric) {
       Measured(pass, Step::kPlanarPrior, [&] { RunPlanarPrior(params, problem, regions, &state); });
     }
     if (pass.prior) Measured(pass, Step::kPrior, [&] { RunPrior(pass, problem, &state); });
@@ -474,16 +462,6 @@ class PassRunner {
          report.classified ? "classification"
                            : "nearest-reliable map (classes from the local refine)",
          report.classify_seconds, report.sweeps.anchor_seconds, report.sweeps.sweep_seconds);
-  }
-
-  // Whether the planar prior and the consensus planes run after `pass`.
-  bool PlanarPriorRuns(const Pass& pass) const {
-    return (msp_.planar_prior || msp_.consensus_planes) && pass.kind == PassKind::kGeometric;
-  }
-
-  // Whether `pass` reads the colour segments (MakeSegments).
-  bool NeedsSegments(const Pass& pass) const {
-    return pass.segment_planes || PlanarPriorRuns(pass);
   }
 
   // The colour segments of the image at this round (SegmentPlaneLabels),

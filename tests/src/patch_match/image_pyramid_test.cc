@@ -209,8 +209,6 @@ TEST(ImagePyramid, UpsampleJointBilateralKeepsOnePlaneExactly) {
   }
 }
 
-// A coarse pixel without a plane takes one from its neighbours; a fine pixel
-// whose 3x3 has none keeps nearest neighbour's empty plane and mask.
 // The fine rows share out over threads with the planes one thread gives.
 TEST(ImagePyramid, UpsampleJointBilateralOnThreadsIsTheSame) {
   const core::Camera fine = test::CentredCamera(64, 48);
@@ -225,6 +223,8 @@ TEST(ImagePyramid, UpsampleJointBilateralOnThreadsIsTheSame) {
   EXPECT_EQ(one.mask, three.mask);
 }
 
+// A coarse pixel without a plane takes one from its neighbours; a fine pixel
+// whose 3x3 has none keeps nearest neighbour's empty plane and mask.
 TEST(ImagePyramid, UpsampleJointBilateralFillsFromNeighbours) {
   const core::Camera fine = test::CentredCamera(64, 48);
   const core::Camera coarse = HalveCamera(fine, 32, 24);

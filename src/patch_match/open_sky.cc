@@ -357,8 +357,9 @@ void CountEvidence(const core::PassParams& params, const std::vector<int32_t>& l
   });
   for (int row = 0; row < s.height; ++row) {
     for (int col = 0; col < s.width; ++col) {
-      if (kind[s.Index(col, row)] == kNone) continue;
-      const bool beside_texture = kind[s.Index(col, row)] == kBesideTexture;
+      const int i = s.Index(col, row);
+      if (kind[i] == kNone) continue;
+      const bool beside_texture = kind[i] == kBesideTexture;
       int ids[5];
       int num_ids = 0;
       const auto add = [&](int c, int r) {
@@ -373,8 +374,8 @@ void CountEvidence(const core::PassParams& params, const std::vector<int32_t>& l
         if (!candidate[id]) continue;
         if (planes[id].accepted && !DepthOnPlane(params, col, row, planes[id])) continue;
         SegmentStats& segment = (*stats)[id];
-        segment.own_evidence.push_back(s.Index(col, row));
-        if (!beside_texture) segment.clear_evidence.push_back(s.Index(col, row));
+        segment.own_evidence.push_back(i);
+        if (!beside_texture) segment.clear_evidence.push_back(i);
       }
     }
   }
